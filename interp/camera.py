@@ -1,0 +1,187 @@
+"""Cameras: the projection matrix, the view matrix, and a ground-plane camera for the lessons.
+
+Conventions are OpenGL's: right-handed view space, the camera at the origin looking down -z,
+clip coordinates ``(x, y, z, w)`` with ``w = -z_view`` (the view depth), NDC in ``[-1, 1]^3``.
+
+Glossary
+--------
+fovy   : vertical field of view, in degrees.
+aspect : width / height of the image.
+near   : distance to the near clipping plane (> 0).
+far    : distance to the far clipping plane (> near).
+eye    : where the camera is; target: a point it looks at; up: which way is up.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from interp import _checks
+
+
+def perspective(fovy_degrees: float, aspect: float, near: float, far: float) -> np.ndarray:
+    """The perspective projection matrix of ``gluPerspective``.
+
+    Parameters
+    ----------
+    fovy_degrees : float
+        Vertical field of view in degrees, in (0, 180).
+    aspect : float
+        Width / height, > 0.
+    near, far : float
+        Distances to the near and far planes, ``0 < near < far``.
+
+    Returns
+    -------
+    (4, 4) array
+        Maps view space to clip space. Its last row is ``(0, 0, -1, 0)``, so the clip-space
+        ``w`` of a point is its view depth ``-z``: the number perspective-correct
+        interpolation divides by.
+
+    Examples
+    --------
+    >>> P = perspective(90, 1.0, 1.0, 3.0)
+    >>> P @ [0, 0, -1, 1]            # a point on the near plane lands at NDC z = -1
+    array([ 0.,  0., -1.,  1.])
+    >>> clip = P @ [0, 0, -3, 1]     # on the far plane: z / w = +1
+    >>> float(clip[2] / clip[3])
+    1.0
+    """
+    fovy = _checks.real_in(fovy_degrees, "fovy_degrees", 0, 180, low_open=True, high_open=True)
+    aspect = _checks.real_in(aspect, "aspect", 0, None, low_open=True)
+    near = _checks.real_in(near, "near", 0, None, low_open=True)
+    far = _checks.real(far, "far")
+    if far <= near:
+        raise ValueError(f"far must be greater than near ({near:g}), got {far:g}")
+    f = 1.0 / np.tan(np.radians(fovy) / 2)
+    return np.array(
+        [
+            [f / aspect, 0.0, 0.0, 0.0],
+            [0.0, f, 0.0, 0.0],
+            [0.0, 0.0, (far + near) / (near - far), 2 * far * near / (near - far)],
+            [0.0, 0.0, -1.0, 0.0],
+        ]
+    )
+
+
+def look_at(eye: object, target: object, up: object) -> np.ndarray:
+    """The view matrix of ``gluLookAt``: world space to view space.
+
+    Parameters
+    ----------
+    eye, target : (3,) array_like
+        Where the camera is and a point it looks at; they must differ.
+    up : (3,) array_like
+        Which way is up; must not be parallel to ``target - eye``.
+
+    Returns
+    -------
+    (4, 4) array
+        A rigid motion taking ``eye`` to the origin and ``target`` onto the -z axis.
+
+    Examples
+    --------
+    >>> V = look_at(eye=[0, 0, 5], target=[0, 0, 0], up=[0, 1, 0])
+    >>> V @ [0, 0, 0, 1]             # the target is 5 units in front: z = -5
+    array([ 0.,  0., -5.,  1.])
+    """
+    eye = _checks.float_array(eye, "eye", (3,))
+    target = _checks.float_array(target, "target", (3,))
+    up = _checks.float_array(up, "up", (3,))
+    forward = target - eye
+    length = np.linalg.norm(forward)
+    if length == 0:
+        raise ValueError("eye and target must differ")
+    forward = forward / length
+    up_length = np.linalg.norm(up)
+    side = np.cross(forward, up)
+    if up_length == 0 or np.linalg.norm(side) <= 1e-12 * up_length:
+        raise ValueError("up must not be zero or parallel to the view direction target - eye")
+    side = side / np.linalg.norm(side)
+    true_up = np.cross(side, forward)
+    view = np.eye(4)
+    view[0, :3], view[1, :3], view[2, :3] = side, true_up, -forward
+    view[:3, 3] = -view[:3, :3] @ eye
+    return view
+
+
+@dataclass(frozen=True)
+class Camera:
+    """A camera above the ground plane ``y = 0``, described by the lessons' slider values.
+
+    The camera stands ``distance`` away from the world origin horizontally, at ``height``
+    above the ground, on the side given by ``yaw``; it faces the origin's direction horizontally
+    and tilts down by ``pitch`` degrees (90 looks straight down, 0 at the horizon).
+
+    Parameters
+    ----------
+    height : float
+        Height of the eye above the ground (may be 0 or negative: the camera is then in or
+        below the plane).
+    pitch : float
+        Degrees below the horizon, in [-89, 90].
+    yaw : float
+        Degrees of rotation about the vertical axis, any finite value.
+    distance : float
+        Horizontal distance from the origin, >= 0.
+    fovy : float
+        Vertical field of view in degrees, in (0, 180).
+    near, far : float
+        Clipping distances, ``0 < near < far``.
+    aspect : float
+        Width / height of the image, > 0.
+
+    Examples
+    --------
+    >>> cam = Camera(height=2.0, pitch=90.0, distance=0.0)
+    >>> cam.eye
+    array([0., 2., 0.])
+    >>> cam.view @ [0, 0, 0, 1]      # looking straight down: the origin is 2 units ahead
+    array([ 0.,  0., -2.,  1.])
+    """
+
+    height: float = 1.0
+    pitch: float = 20.0
+    yaw: float = 0.0
+    distance: float = 3.0
+    fovy: float = 60.0
+    near: float = 0.1
+    far: float = 100.0
+    aspect: float = 1.0
+
+    def __post_init__(self) -> None:
+        _checks.real(self.height, "height")
+        _checks.real_in(self.pitch, "pitch", -89, 90)
+        _checks.real(self.yaw, "yaw")
+        _checks.real_in(self.distance, "distance", 0, None)
+        perspective(self.fovy, self.aspect, self.near, self.far)  # checks the rest
+
+    @property
+    def eye(self) -> np.ndarray:
+        """(3,) array: the camera's position in world space."""
+        yaw = np.radians(self.yaw)
+        return np.array(
+            [self.distance * np.sin(yaw), float(self.height), self.distance * np.cos(yaw)]
+        )
+
+    @property
+    def view(self) -> np.ndarray:
+        """(4, 4) array: world to view space, built from rotations so pitch = 90 is fine."""
+        yaw, pitch = np.radians(self.yaw), np.radians(self.pitch)
+        rotate_yaw = np.array(  # undo the yaw: turn about +y by -yaw
+            [[np.cos(yaw), 0, -np.sin(yaw)], [0, 1, 0], [np.sin(yaw), 0, np.cos(yaw)]]
+        )
+        rotate_pitch = np.array(  # tilt the view down by pitch: turn about +x by +pitch
+            [[1, 0, 0], [0, np.cos(pitch), -np.sin(pitch)], [0, np.sin(pitch), np.cos(pitch)]]
+        )
+        view = np.eye(4)
+        view[:3, :3] = rotate_pitch @ rotate_yaw
+        view[:3, 3] = -view[:3, :3] @ self.eye
+        return view
+
+    @property
+    def projection(self) -> np.ndarray:
+        """(4, 4) array: ``perspective(fovy, aspect, near, far)``."""
+        return perspective(self.fovy, self.aspect, self.near, self.far)

@@ -1,0 +1,191 @@
+"""The same draw on real OpenGL, to hold :func:`interp.rasterize` to account.
+
+Uses moderngl with a headless EGL context; on Debian that is Mesa's llvmpipe software renderer
+(packages ``libegl1`` and ``libgl1-mesa-dri``). Install the extra with ``pip install
+"interp[gl]"``. The vertex shader passes clip coordinates straight through, so OpenGL clips,
+divides, maps to the viewport and interpolates exactly as the specification says.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cache
+from typing import Any
+
+import numpy as np
+
+from interp import _checks
+from interp.raster import _check_scene
+
+#: Attribute components OpenGL carries here (one vec4 varying).
+MAX_COMPONENTS = 4
+
+_VERTEX = """
+#version 330
+in vec4 in_clip;
+in vec4 in_attribute;
+{qualifier} out vec4 value;
+void main() {{
+    gl_Position = in_clip;
+    value = in_attribute;
+}}
+"""
+
+_FRAGMENT = """
+#version 330
+{qualifier} in vec4 value;
+layout(location = 0) out vec4 out_attribute;
+layout(location = 1) out vec4 out_info;   // (triangle index, window depth, 1 = covered, 0)
+void main() {{
+    out_attribute = value;
+    out_info = vec4(float(gl_PrimitiveID), gl_FragCoord.z, 1.0, 0.0);
+}}
+"""
+
+
+@dataclass(frozen=True)
+class GLImage:
+    """What OpenGL drew. Images: row 0 at the top, like :func:`interp.rasterize`.
+
+    Attributes
+    ----------
+    values : (H, W, K) float32 array
+        The interpolated attributes, 0 where nothing was drawn.
+    covered : (H, W) bool array
+    triangle : (H, W) int array
+        ``gl_PrimitiveID`` of the visible triangle, -1 where nothing was drawn.
+    depth : (H, W) float32 array
+        ``gl_FragCoord.z``, 1 where nothing was drawn.
+    """
+
+    values: np.ndarray
+    covered: np.ndarray
+    triangle: np.ndarray
+    depth: np.ndarray
+
+
+@cache
+def context() -> Any:
+    """A shared headless OpenGL 3.3+ context (EGL). Raises RuntimeError if none can be made."""
+    try:
+        import moderngl
+    except ImportError as error:  # pragma: no cover - depends on the install
+        raise RuntimeError('moderngl is not installed: pip install "interp[gl]"') from error
+    try:
+        return moderngl.create_standalone_context(backend="egl")
+    except Exception as error:  # pragma: no cover - depends on the machine
+        raise RuntimeError(
+            "no headless OpenGL context (EGL); on Debian: apt-get install libegl1 libgl1-mesa-dri"
+        ) from error
+
+
+def renderer() -> str:
+    """The GL_RENDERER string, e.g. ``'llvmpipe (LLVM 15.0.6, 256 bits)'``."""
+    return context().info["GL_RENDERER"]
+
+
+class Renderer:
+    """A reusable OpenGL draw of one size and mode (shaders and buffers made once).
+
+    Examples
+    --------
+    >>> gl = Renderer(4, 4, "perspective")
+    >>> image = gl.draw([[-1, -1, 0, 1], [3, -1, 0, 1], [-1, 3, 0, 1]], [[1.0]] * 3, [[0, 1, 2]])
+    >>> image.values[..., 0]
+    array([[1., 1., 1., 1.],
+           [1., 1., 1., 1.],
+           [1., 1., 1., 1.],
+           [1., 1., 1., 1.]], dtype=float32)
+    """
+
+    def __init__(self, width: int, height: int, mode: str = "perspective") -> None:
+        self.width = _checks.positive_int(width, "width")
+        self.height = _checks.positive_int(height, "height")
+        mode = _checks.choice(mode, "mode", ("perspective", "affine"))
+        qualifier = "smooth" if mode == "perspective" else "noperspective"
+        ctx = self.ctx = context()
+        self.program = ctx.program(
+            vertex_shader=_VERTEX.format(qualifier=qualifier),
+            fragment_shader=_FRAGMENT.format(qualifier=qualifier),
+        )
+        size = (self.width, self.height)
+        self._attribute = ctx.texture(size, 4, dtype="f4")
+        self._info = ctx.texture(size, 4, dtype="f4")
+        self._depth = ctx.depth_texture(size)
+        self.framebuffer = ctx.framebuffer([self._attribute, self._info], self._depth)
+
+    def draw(self, clip: object, attributes: object, triangles: object) -> GLImage:
+        """Draw the triangles and read both buffers back."""
+        clip, attributes, triangles = _check_scene(clip, attributes, triangles)
+        k = attributes.shape[1]
+        if k > MAX_COMPONENTS:
+            raise ValueError(f"attributes must have at most {MAX_COMPONENTS} columns, got {k}")
+        self.render(clip, attributes, triangles)
+        return self.read(k)
+
+    def render(self, clip: np.ndarray, attributes: np.ndarray, triangles: np.ndarray) -> None:
+        """Issue the draw (no read-back). Arguments as checked by :meth:`draw`."""
+        ctx = self.ctx
+        padded = np.zeros((len(attributes), 4), dtype="f4")
+        padded[:, : attributes.shape[1]] = attributes
+        buffers = [
+            ctx.buffer(clip.astype("f4").tobytes()),
+            ctx.buffer(padded.tobytes()),
+            ctx.buffer(triangles.astype("i4").tobytes()),
+        ]
+        vao = ctx.vertex_array(
+            self.program,
+            [(buffers[0], "4f", "in_clip"), (buffers[1], "4f", "in_attribute")],
+            index_buffer=buffers[2],
+            index_element_size=4,
+        )
+        self.framebuffer.use()
+        ctx.viewport = (0, 0, self.width, self.height)
+        ctx.enable(ctx.DEPTH_TEST)
+        ctx.disable(ctx.CULL_FACE)
+        ctx.depth_func = "<"
+        self.framebuffer.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
+        if len(triangles):
+            vao.render(mode=ctx.TRIANGLES, vertices=3 * len(triangles))
+        vao.release()
+        for buffer in buffers:
+            buffer.release()
+
+    def read(self, k: int) -> GLImage:
+        """Read the attribute and info buffers back as images (row 0 at the top)."""
+        shape = (self.height, self.width, 4)
+        attribute = np.frombuffer(self._attribute.read(), dtype="f4").reshape(shape)[::-1]
+        info = np.frombuffer(self._info.read(), dtype="f4").reshape(shape)[::-1]
+        covered = info[..., 2] > 0.5
+        return GLImage(
+            values=np.ascontiguousarray(attribute[..., :k]),
+            covered=np.ascontiguousarray(covered),
+            triangle=np.where(covered, np.rint(info[..., 0]).astype(np.int64), -1),
+            depth=np.where(covered, info[..., 1], np.float32(1.0)),
+        )
+
+    def release(self) -> None:
+        """Free the GPU objects."""
+        for thing in (self.framebuffer, self._attribute, self._info, self._depth, self.program):
+            thing.release()
+
+
+def render(
+    clip: object,
+    attributes: object,
+    triangles: object,
+    width: int,
+    height: int,
+    mode: str = "perspective",
+) -> GLImage:
+    """Draw once with OpenGL: the counterpart of :func:`interp.rasterize`.
+
+    Parameters are those of :func:`interp.rasterize` (``mode`` is ``"perspective"`` for GLSL
+    ``smooth`` or ``"affine"`` for ``noperspective``; at most 4 attribute columns).
+    Values come back as float32, OpenGL's precision.
+    """
+    gl = Renderer(width, height, mode)
+    try:
+        return gl.draw(clip, attributes, triangles)
+    finally:
+        gl.release()
