@@ -62,9 +62,7 @@ def positive_int(value: object, name: str, cap: int = MAX_SIZE) -> int:
     return value
 
 
-def float_array(
-    value: object, name: str, shape: Sequence[int | None] | None = None
-) -> np.ndarray:
+def float_array(value: object, name: str, shape: Sequence[int | None] | None = None) -> np.ndarray:
     """Return ``value`` as a finite float64 array of the given shape (None = any length).
 
     Raises TypeError if ``value`` is not numeric and ValueError for a wrong shape, NaN or inf.
@@ -79,7 +77,7 @@ def float_array(
     if shape is not None:
         expected = "(" + ", ".join("N" if n is None else str(n) for n in shape) + ")"
         if array.ndim != len(shape) or any(
-            n is not None and n != m for n, m in zip(shape, array.shape)
+            n is not None and n != m for n, m in zip(shape, array.shape, strict=True)
         ):
             raise ValueError(f"{name} must have shape {expected}, got {array.shape}")
     if not np.all(np.isfinite(array)):
@@ -96,7 +94,7 @@ def index_array(value: object, name: str, count: int, shape: Sequence[int | None
         raise TypeError(f"{name} must be an array of integers, got dtype {array.dtype}")
     expected = "(" + ", ".join("M" if n is None else str(n) for n in shape) + ")"
     if array.ndim != len(shape) or any(
-        n is not None and n != m for n, m in zip(shape, array.shape)
+        n is not None and n != m for n, m in zip(shape, array.shape, strict=True)
     ):
         raise ValueError(f"{name} must have shape {expected}, got {array.shape}")
     array = array.astype(np.int64)

@@ -64,7 +64,9 @@ class ClippedTriangles:
         )
 
 
-def clip_triangles(clip: np.ndarray, attributes: np.ndarray, triangles: np.ndarray) -> ClippedTriangles:
+def clip_triangles(
+    clip: np.ndarray, attributes: np.ndarray, triangles: np.ndarray
+) -> ClippedTriangles:
     """Clip indexed triangles against the view volume.
 
     Parameters
@@ -126,9 +128,7 @@ def _clip_against(soup: ClippedTriangles, plane: np.ndarray) -> ClippedTriangles
         (_assemble(u1, u2, cut20), np.flatnonzero(two)),
         (_assemble(u1, cut20, cut10), np.flatnonzero(two)),
     ]
-    parent = np.concatenate(
-        [np.flatnonzero(n_inside == 3)] + [index for _, index in pieces[1:]]
-    )
+    parent = np.concatenate([np.flatnonzero(n_inside == 3)] + [index for _, index in pieces[1:]])
     order = np.argsort(parent, kind="stable")  # back into draw order
     return ClippedTriangles(
         *(np.concatenate([getattr(p, f) for p, _ in pieces])[order] for f in _FIELDS)

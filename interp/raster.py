@@ -8,7 +8,7 @@ The pipeline, one function each:
 3. Scan conversion (:func:`fragments`): on every pixel row a triangle covers a *span* of pixel
    centres between its edges; the nearest fragment per pixel wins (``GL_LESS``).
 4. Interpolation (:func:`interpolate`): the attribute at each visible pixel from its screen-space
-   barycentrics, affinely or perspective-correctly (see :mod:`interp.interpolate`).
+   barycentrics, affinely or perspective-correctly (see :mod:`interp.barycentric`).
 
 Window coordinates are snapped to 1/256 pixel, as GPUs do, and the edge functions are evaluated
 in exact integer arithmetic there. A fill rule decides pixel centres exactly on an edge, so two
@@ -22,12 +22,11 @@ Images are arrays: row 0 is the *top* of the image (window y = height - 1/2).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from interp import _checks
-from interp import interpolate as formulas
+from interp import _checks, barycentric
 from interp.clipping import ClippedTriangles, clip_triangles
 
 #: Window coordinates are snapped to 1/SUBPIXELS of a pixel (8 bits, like llvmpipe).
@@ -42,40 +41,82 @@ MAX_COORDINATE = 1e12
 
 @dataclass(frozen=True)
 class Fragments:
-    """What the rasterizer decided for every pixel, before interpolating any attribute.
+    """What the rasterizer decided, before interpolating any attribute: one fragment per drawn
+    pixel, the nearest one there.
 
-    All per-pixel arrays are images: shape (height, width, ...), row 0 at the top.
+    Per-fragment arrays have one row per drawn pixel, in image order (row 0 at the top); use
+    :meth:`image` to spread one over the image.
 
     Attributes
     ----------
-    covered : (H, W) bool array
-        Whether any triangle covers the pixel centre.
-    depth : (H, W) float array
-        Window-space depth ``(z/w + 1) / 2`` of the visible fragment; 1 (the cleared depth
-        buffer) where nothing is drawn.
-    triangle : (H, W) int array
-        Index of the input triangle seen at each pixel, -1 where nothing is drawn.
-    barycentric : (H, W, 3) float array
-        Screen-space barycentric coordinates of the pixel centre in the visible (clipped)
-        triangle; 0 where nothing is drawn.
-    piece : (H, W) int array
-        Index into ``clipped`` of the visible triangle, -1 where nothing is drawn.
-    span : (H, W, 2) int array
-        First and last pixel column the visible triangle covers on this row.
+    width, height : int
+        The image size.
+    pixel : (P,) int array
+        Flat image index ``row * width + column`` of each fragment's pixel.
+    piece : (P,) int array
+        Index into ``clipped`` of the triangle the fragment belongs to.
+    barycentric : (3, P) float array
+        Screen-space barycentric coordinates ``b0, b1, b2`` of each pixel centre in its
+        triangle (vertex first: ``b0, b1, b2 = frags.barycentric``).
     clipped : ClippedTriangles
         The triangles after clipping.
-    barycentric_dx : (T, 3) float array
-        How each clipped triangle's barycentrics change from one pixel to the next in a row.
+    barycentric_dx, barycentric_dy : (3, T) float arrays
+        How each clipped triangle's barycentrics change from one pixel to the next along a row
+        (x) and down a column (y, the image's row index).
     """
 
-    covered: np.ndarray
-    depth: np.ndarray
-    triangle: np.ndarray
-    barycentric: np.ndarray
+    width: int
+    height: int
+    pixel: np.ndarray
     piece: np.ndarray
-    span: np.ndarray
+    barycentric: np.ndarray
     clipped: ClippedTriangles
     barycentric_dx: np.ndarray
+    barycentric_dy: np.ndarray
+    row_item: np.ndarray = field(repr=False)  # (P,) which (triangle, row) span drew it
+    row_spans: np.ndarray = field(repr=False)  # (R, 2) first and last column of every span
+    row_depths: np.ndarray = field(repr=False)  # (R, 2) depth at column 0 and step per column
+
+    @property
+    def depth(self) -> np.ndarray:
+        """(P,) float array: window-space depth ``(z/w + 1) / 2``, linear along each row."""
+        at_0, step = self.row_depths[self.row_item].T
+        return at_0 + step * self.column
+
+    @property
+    def span(self) -> np.ndarray:
+        """(P, 2) int array: first and last column its triangle covers on the fragment's row."""
+        return self.row_spans[self.row_item]
+
+    @property
+    def covered(self) -> np.ndarray:
+        """(H, W) bool array: where a triangle was drawn."""
+        return self.image(np.ones(len(self.pixel), dtype=bool), False)
+
+    @property
+    def column(self) -> np.ndarray:
+        """(P,) int array: each fragment's pixel column."""
+        return self.pixel % self.width
+
+    @property
+    def triangle(self) -> np.ndarray:
+        """(P,) int array: the input triangle each fragment comes from."""
+        return self.clipped.source[self.piece]
+
+    def image(self, values: np.ndarray, fill: float | int | bool = 0) -> np.ndarray:
+        """Spread per-fragment ``values`` (P, ...) over an image (H, W, ...), ``fill`` elsewhere.
+
+        Examples
+        --------
+        >>> clip = [[-1, -1, 0, 1], [3, -1, 0, 1], [-1, 3, 0, 1]]   # covers the whole view
+        >>> f = fragments(clip, [[0]] * 3, [[0, 1, 2]], 2, 1)
+        >>> f.image(f.depth, fill=1.0)
+        array([[0.5, 0.5]])
+        """
+        values = np.asarray(values)
+        out = np.full((self.height * self.width, *values.shape[1:]), fill, dtype=values.dtype)
+        out[self.pixel] = values
+        return out.reshape(self.height, self.width, *values.shape[1:])
 
 
 def viewport(clip: np.ndarray, width: int, height: int) -> np.ndarray:
@@ -147,7 +188,7 @@ def fragments(
     --------
     >>> clip = [[-1, -1, 0, 1], [1, -1, 0, 1], [-1, 1, 0, 1]]   # lower-left half of the view
     >>> f = fragments(clip, np.zeros((3, 1)), [[0, 1, 2]], 4, 4)
-    >>> f.covered.astype(int)    # row 0 is the top; centres on the diagonal go to the other half
+    >>> f.covered.astype(int)   # row 0 is the top; centres on the diagonal go to the other half
     array([[0, 0, 0, 0],
            [1, 0, 0, 0],
            [1, 1, 0, 0],
@@ -166,44 +207,43 @@ def _fragments(pieces: ClippedTriangles, width: int, height: int) -> Fragments:
     area2 = (X[:, 1] - X[:, 0]) * (Y[:, 2] - Y[:, 0]) - (X[:, 2] - X[:, 0]) * (Y[:, 1] - Y[:, 0])
 
     # Both windings are drawn: turn clockwise triangles counter-clockwise, drop degenerate ones.
-    pieces, X, Y, window = (
-        _take(a, area2 != 0) for a in (pieces, X, Y, window)
-    )
+    pieces, X, Y, window = (_take(a, area2 != 0) for a in (pieces, X, Y, window))
     area2 = area2[area2 != 0]
     clockwise = area2 < 0
     swap = np.where(clockwise[:, None], [0, 2, 1], [0, 1, 2])
     pieces = _reorder(pieces, swap)
-    X, Y, window = (np.take_along_axis(a, swap if a.ndim == 2 else swap[..., None], axis=1)
-                    for a in (X, Y, window))
+    X, Y, window = (
+        np.take_along_axis(a, swap if a.ndim == 2 else swap[..., None], axis=1)
+        for a in (X, Y, window)
+    )
     area2 = np.abs(area2)
 
     edges = _Edges.of(X, Y)
-    rows = _rows(pieces, Y, edges, width, height)
-    depth_per_x, depth_at_row = _depth_plane(window[..., 2], edges, rows, area2)
-    winner, depth = _nearest(rows, depth_per_x, depth_at_row, width, height)
+    rows = _rows(Y, edges, width, height)
 
-    # Per visible pixel: screen-space barycentrics b_i = E_i / (2 area), exact E_i.
-    covered = winner >= 0
-    item = winner[covered]
-    piece = rows.piece[item]
-    px = np.flatnonzero(covered) % width
-    E = SUBPIXELS * edges.A[piece] * px[:, None] + rows.K[item]
-    b = E / area2[piece, None]
+    # Along a row everything is linear in the column x: per row item, a value at x = 0 and a
+    # step per pixel. Barycentrics b_i = E_i / (2 area); window depth z_w = sum(b_i z_i).
+    b_at_0 = (rows.K / area2[rows.piece, None]).T  # (3, R)
+    b_dx = (SUBPIXELS * edges.A / area2[:, None]).T  # (3, T)
+    z = window[..., 2].T  # (3, T)
+    z_at_0 = np.sum(b_at_0 * z[:, rows.piece], axis=0)
+    z_dx = np.sum(b_dx * z, axis=0)[rows.piece]
 
-    def image(values: np.ndarray, fill: float | int) -> np.ndarray:
-        out = np.full((height * width, *values.shape[1:]), fill, dtype=values.dtype)
-        out[covered] = values
-        return np.ascontiguousarray(out.reshape(height, width, *values.shape[1:])[::-1])
-
+    pixel, item = _nearest(rows, z_at_0, z_dx, width, height)
+    x = pixel % width
+    line = np.take(np.concatenate([b_at_0, b_dx[:, rows.piece]]), item, axis=1)  # one gather
     return Fragments(
-        covered=np.ascontiguousarray(covered.reshape(height, width)[::-1]),
-        depth=np.ascontiguousarray(depth.reshape(height, width)[::-1]),
-        triangle=image(pieces.source[piece], -1),
-        barycentric=image(b, 0.0),
-        piece=image(piece, -1),
-        span=image(np.stack([rows.x_first[item], rows.x_last[item]], axis=1), 0),
+        width=width,
+        height=height,
+        pixel=pixel,
+        piece=rows.piece[item],
+        barycentric=line[0:3] + line[3:6] * x,
         clipped=pieces,
-        barycentric_dx=SUBPIXELS * edges.A / area2[:, None],
+        barycentric_dx=b_dx,
+        barycentric_dy=(-SUBPIXELS * edges.B / area2[:, None]).T,  # rows go down, window y up
+        row_item=item,
+        row_spans=np.stack([rows.x_first, rows.x_last], axis=1),
+        row_depths=np.stack([z_at_0, z_dx], axis=1),
     )
 
 
@@ -260,7 +300,7 @@ class _Rows:
     K: np.ndarray  # (R, 3) E_i at column 0 of the row: E_i(x) = SUBPIXELS A_i x + K_i
 
 
-def _rows(pieces: ClippedTriangles, Y: np.ndarray, e: _Edges, width: int, height: int) -> _Rows:
+def _rows(Y: np.ndarray, e: _Edges, width: int, height: int) -> _Rows:
     # Rows whose centres (y + 1/2) lie within the triangle's vertical extent.
     half = SUBPIXELS // 2
     y_low = np.maximum(-((half - Y.min(axis=1)) // SUBPIXELS), 0)  # ceil
@@ -288,44 +328,42 @@ def _ranks(count: np.ndarray) -> np.ndarray:
     return np.arange(total) - starts
 
 
-def _depth_plane(
-    z: np.ndarray, e: _Edges, rows: _Rows, area2: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """Window depth is linear on the screen: ``z_w(x) = depth_at_row + depth_per_x * x``."""
-    depth_per_x = SUBPIXELS * np.sum(z * e.A, axis=1) / area2  # per triangle
-    depth_at_row = np.sum(z[rows.piece] * rows.K, axis=1) / area2[rows.piece]  # per row item
-    return depth_per_x, depth_at_row
-
-
 def _nearest(
-    rows: _Rows, depth_per_x: np.ndarray, depth_at_row: np.ndarray, width: int, height: int
+    rows: _Rows, z_at_0: np.ndarray, z_dx: np.ndarray, width: int, height: int
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Depth test ``GL_LESS`` against a buffer cleared to 1: per pixel, the row item that wins.
+    """Depth test ``GL_LESS`` against a buffer cleared to 1: the row item that wins each pixel.
 
-    Items are in draw order, so among equally near fragments the earliest one wins, as in
-    OpenGL where a later fragment must be strictly nearer to replace it.
+    Returns the drawn pixels (flat image indices, row 0 at the top, ascending) and the row item
+    that won each.
+
+    Each fragment's key packs its depth, in fixed point with at least 32 bits (a GL depth
+    buffer has 24), above its row item's index, which grows in draw order. The smallest key per
+    pixel is then the nearest fragment, and among equally near ones the first drawn: as in
+    OpenGL, where a later fragment must be strictly nearer to replace an earlier one.
     """
-    depth = np.ones(width * height)
-    winner = np.full(width * height, -1, dtype=np.int64)
+    item_bits = max(len(rows.piece).bit_length(), 1)
+    depth_bits = 62 - item_bits
+    if depth_bits < 32:  # pragma: no cover - would need ~2**30 row items
+        raise ValueError("too many triangle rows for one image")
+    cleared = np.int64(1) << np.int64(depth_bits + item_bits)  # depth 1: nothing passes
+    keys = np.full(width * height, cleared, dtype=np.int64)
+
     length = np.maximum(rows.x_last - rows.x_first + 1, 0)
-    end = np.cumsum(length)
+    first_fragment = np.cumsum(length) - length
+    row_start = (height - 1 - rows.y) * width  # image order: row 0 at the top
     start = 0
-    while start < len(length):
-        stop = max(int(np.searchsorted(end, end[start] - length[start] + CHUNK, "right")),
-                   start + 1)
-        item = np.arange(start, stop).repeat(length[start:stop])
-        x = rows.x_first[item] + _ranks(length[start:stop])
-        pixel = rows.y[item] * width + x
-        z = depth_at_row[item] + depth_per_x[rows.piece[item]] * x
-        nearest = depth.copy()
-        np.minimum.at(nearest, pixel, z)
-        wins = (z == nearest[pixel]) & (z < depth[pixel])
-        first = np.full(width * height, np.iinfo(np.int64).max)
-        np.minimum.at(first, pixel[wins], item[wins])
-        hit = first != np.iinfo(np.int64).max
-        depth[hit], winner[hit] = nearest[hit], first[hit]
+    while start < len(length):  # in chunks of about CHUNK fragments, to bound memory
+        stop = max(int(np.searchsorted(first_fragment, first_fragment[start] + CHUNK)), start + 1)
+        n = length[start:stop]
+        item = np.repeat(np.arange(start, stop), n)
+        shift = first_fragment[start:stop] - first_fragment[start] - rows.x_first[start:stop]
+        x = np.arange(item.size) - np.repeat(shift, n)
+        z = np.repeat(z_at_0[start:stop], n) + np.repeat(z_dx[start:stop], n) * x
+        depth = (np.clip(z, 0.0, 1.0) * float(1 << depth_bits)).astype(np.int64)
+        np.minimum.at(keys, np.repeat(row_start[start:stop], n) + x, (depth << item_bits) | item)
         start = stop
-    return winner, depth
+    pixel = np.flatnonzero(keys < cleared)
+    return pixel, keys[pixel] & ((1 << item_bits) - 1)
 
 
 def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> np.ndarray:
@@ -354,33 +392,100 @@ def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> 
     >>> interpolate(f)[3, :, 0]               # the bottom row: x = 1/8, 3/8, 5/8, not drawn
     array([0.125, 0.375, 0.625, 0.   ])
     """
+    return frags.image(fragment_values(frags, mode, span).T, 0.0)
+
+
+def fragment_values(frags: Fragments, mode: str = "perspective", span: int = 16) -> np.ndarray:
+    """Like :func:`interpolate`, but per fragment: a (K, P) array, column j at ``frags.pixel[j]``.
+
+    Examples
+    --------
+    >>> f = fragments([[-1, -1, 0, 1], [3, -1, 0, 1], [-1, 3, 0, 1]], [[0.0], [4.0], [0.0]],
+    ...               [[0, 1, 2]], 2, 1)
+    >>> fragment_values(f)
+    array([[0.5, 1.5]])
+    """
     mode = _checks.choice(mode, "mode", MODES)
     span = _checks.positive_int(span, "span")
-    covered = frags.covered
-    piece = frags.piece[covered]
-    b = frags.barycentric[covered]
-    w = frags.clipped.clip[piece, :, 3]
+    piece, b = frags.piece, frags.barycentric
     if mode == "affine":
-        values = formulas.noperspective(b, frags.clipped.noperspective[piece])
-    elif mode == "perspective":
-        values = formulas.smooth(b, frags.clipped.smooth[piece], w)
-    else:
-        x = np.nonzero(covered)[1]
-        first, last = frags.span[covered].T
-        left = first + (x - first) // span * span
-        right = np.minimum(left + span, last)
-        db = frags.barycentric_dx[piece]
-        fraction = np.where(right > left, (x - left) / np.maximum(right - left, 1), 0.0)
-        values = formulas.subdivided(
-            b + (left - x)[:, None] * db,
-            b + (right - x)[:, None] * db,
-            fraction,
-            frags.clipped.smooth[piece],
-            w,
+        return barycentric.noperspective(b, _per_fragment(frags.clipped.noperspective, piece))
+    a_over_w, one_over_w = _a_over_w_and_one_over_w(frags)
+    if mode == "perspective":
+        return barycentric.smooth(b, a_over_w, one_over_w)
+    x = frags.column
+    first, last = frags.span.T
+    left = first + (x - first) // span * span
+    right = np.minimum(left + span, last)
+    db = np.take(frags.barycentric_dx, piece, axis=1)
+    fraction = np.where(right > left, (x - left) / np.maximum(right - left, 1), 0.0)
+    return barycentric.subdivided(
+        b + (left - x) * db, b + (right - x) * db, fraction, a_over_w, one_over_w
+    )
+
+
+def fragment_footprints(
+    frags: Fragments, mode: str = "perspective", values: np.ndarray | None = None
+) -> np.ndarray:
+    """How much each attribute changes across each fragment's pixel: ``|da/dx| + |da/dy|``.
+
+    The exact screen-space derivatives of the interpolated attribute (what GLSL's ``fwidth``
+    estimates from neighbouring pixels), used to filter textures. ``"subdivided"`` is treated
+    as ``"perspective"``.
+
+    Parameters
+    ----------
+    frags : Fragments
+    mode : {"perspective", "affine", "subdivided"}
+    values : (K, P) array, optional
+        ``fragment_values(frags, mode)``, if already at hand.
+
+    Returns
+    -------
+    (K, P) float array
+
+    Examples
+    --------
+    >>> f = fragments([[-1, -1, 0, 1], [3, -1, 0, 1], [-1, 3, 0, 1]], [[0.0], [4.0], [0.0]],
+    ...               [[0, 1, 2]], 2, 1)
+    >>> fragment_footprints(f, "affine")     # 4 units over 4 pixels along x
+    array([[1., 1.]])
+    """
+    mode = _checks.choice(mode, "mode", MODES)
+    pieces, piece = frags.clipped, frags.piece
+    db = np.stack([frags.barycentric_dx, frags.barycentric_dy], axis=1)  # (3, 2, T)
+    if mode == "affine":  # a is linear on the screen: constant steps on each triangle
+        da = np.einsum("idt,tik->dkt", db, pieces.noperspective)  # (2, K, T)
+        return np.take(np.abs(da).sum(axis=0), piece, axis=1)
+
+    one_over_w = 1.0 / pieces.clip[:, :, 3]  # (T, 3)
+    a_over_w = pieces.smooth * one_over_w[..., None]
+    dN = np.einsum("idt,tik->dkt", db, a_over_w)  # steps of N = lerp(a/w), (2, K, T)
+    dD = np.einsum("idt,ti->dt", db, one_over_w)  # steps of D = lerp(1/w), (2, T)
+    if values is None:
+        values = fragment_values(frags, "perspective")
+    D = barycentric.lerp(frags.barycentric, np.take(one_over_w.T, piece, axis=1))
+    footprint = np.zeros_like(values)
+    for d in range(2):  # x, then y
+        da = barycentric.smooth_derivative(
+            values, D, np.take(dN[d], piece, axis=1), np.take(dD[d], piece)
         )
-    out = np.zeros((*covered.shape, frags.clipped.smooth.shape[2]))
-    out[covered] = values
-    return out
+        footprint += np.abs(da)
+    return footprint
+
+
+def _per_fragment(per_vertex: np.ndarray, piece: np.ndarray) -> np.ndarray:
+    """Gather (T, 3, K) per-vertex values for each fragment as (3, K, P)."""
+    return np.take(np.moveaxis(per_vertex, 0, 2), piece, axis=2)
+
+
+def _a_over_w_and_one_over_w(frags: Fragments) -> tuple[np.ndarray, np.ndarray]:
+    """What each vertex hands on for perspective-correct interpolation: a/w and 1/w."""
+    pieces = frags.clipped
+    one_over_w = 1.0 / pieces.clip[:, :, 3]
+    per_vertex = np.concatenate([pieces.smooth * one_over_w[..., None], one_over_w[..., None]], 2)
+    per_vertex = _per_fragment(per_vertex, frags.piece)  # (3, K + 1, P): one gather
+    return per_vertex[:, :-1], per_vertex[:, -1]
 
 
 def rasterize(

@@ -1,0 +1,135 @@
+"""The three ways a rasterizer can fill in an attribute between a triangle's vertices.
+
+Every pixel knows its screen-space barycentric coordinates ``b = (b0, b1, b2)``: how much of
+each vertex's image it is made of. They sum to 1 and are linear on the screen.
+
+- ``noperspective`` (affine): ``a = b0 a0 + b1 a1 + b2 a2``. Linear on the screen, so wrong for a
+  triangle that is not parallel to the image plane.
+- ``smooth`` (perspective-correct, OpenGL 4.6 eq. 14.9): ``a/w`` and ``1/w`` are what is linear
+  on the screen. Each vertex hands on ``a_i / w_i`` and ``1 / w_i``; every pixel interpolates
+  both linearly and divides::
+
+      a = (b0 a0/w0 + b1 a1/w1 + b2 a2/w2) / (b0/w0 + b1/w1 + b2/w2)
+
+- ``subdivided``: what Quake's span drawer did to save divides: exact (``smooth``) every N pixels
+  along a row, affine in between.
+
+Shapes: P pixels, K attributes, vertex index first and pixels last, so that numpy's loops run
+over the pixels: ``b`` is (3, P); per-vertex values are (3, K, P) or (3, P).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def lerp(b: np.ndarray, per_vertex: np.ndarray) -> np.ndarray:
+    """``b0 v0 + b1 v1 + b2 v2`` for per-vertex values v of shape (3, K, P) or (3, P).
+
+    Examples
+    --------
+    >>> b = np.array([[0.25], [0.75], [0.0]])          # one pixel
+    >>> lerp(b, np.array([[2.0], [4.0], [8.0]]))
+    array([3.5])
+    """
+    b0, b1, b2 = b
+    v0, v1, v2 = per_vertex
+    return b0 * v0 + b1 * v1 + b2 * v2
+
+
+def noperspective(b: np.ndarray, a: np.ndarray) -> np.ndarray:
+    """Affine interpolation ``b0 a0 + b1 a1 + b2 a2``, shape (K, P).
+
+    Examples
+    --------
+    >>> b = np.array([[0.5], [0.5], [0.0]])
+    >>> noperspective(b, np.array([[[0.0]], [[1.0]], [[0.0]]]))
+    array([[0.5]])
+    """
+    return lerp(b, a)
+
+
+def smooth(b: np.ndarray, a_over_w: np.ndarray, one_over_w: np.ndarray) -> np.ndarray:
+    """Perspective-correct interpolation from the vertices' ``a/w`` and ``1/w``, shape (K, P).
+
+    Parameters
+    ----------
+    b : (3, P) array
+        Screen-space barycentrics.
+    a_over_w : (3, K, P) array
+        Each vertex's attributes divided by its clip-space w.
+    one_over_w : (3, P) array
+        Each vertex's ``1 / w``.
+
+    Examples
+    --------
+    Half-way on screen between a vertex at depth 1 and one at depth 3 is only a quarter of the
+    way along the edge in space:
+
+    >>> a = np.array([[[0.0]], [[1.0]], [[0.0]]])      # vertex, attribute, pixel
+    >>> w = np.array([[1.0], [3.0], [1.0]])            # vertex, pixel
+    >>> smooth(np.array([[0.5], [0.5], [0.0]]), a / w[:, None], 1 / w)
+    array([[0.25]])
+    """
+    return lerp(b, a_over_w) / lerp(b, one_over_w)  # the per-pixel divide
+
+
+def subdivided(
+    b_left: np.ndarray,
+    b_right: np.ndarray,
+    fraction: np.ndarray,
+    a_over_w: np.ndarray,
+    one_over_w: np.ndarray,
+) -> np.ndarray:
+    """Exact at two anchor pixels on the row, affine in between.
+
+    Parameters
+    ----------
+    b_left, b_right : (3, P) arrays
+        Barycentrics of each pixel's left and right anchor (pixels N apart on its row).
+    fraction : (P,) array
+        Where the pixel lies between its anchors, from 0 (left) to 1 (right).
+    a_over_w, one_over_w : (3, K, P) and (3, P) arrays
+        As for :func:`smooth`.
+
+    Examples
+    --------
+    >>> a, w = np.array([[[0.0]], [[1.0]], [[0.0]]]), np.array([[1.0], [3.0], [1.0]])
+    >>> left, right = np.array([[1.0], [0], [0]]), np.array([[0.0], [1], [0]])
+    >>> subdivided(left, right, np.array([0.5]), a / w[:, None], 1 / w)   # no longer 0.25
+    array([[0.5]])
+    """
+    at_left = smooth(b_left, a_over_w, one_over_w)
+    at_right = smooth(b_right, a_over_w, one_over_w)
+    return at_left + fraction * (at_right - at_left)
+
+
+def smooth_derivative(
+    a: np.ndarray, one_over_w: np.ndarray, dN: np.ndarray, dD: np.ndarray
+) -> np.ndarray:
+    """How a perspective-correct attribute changes per pixel step, exactly, shape (K, P).
+
+    ``a = N / D`` with ``N = lerp(b, a/w)`` and ``D = lerp(b, 1/w)``. Both are linear on the
+    screen, so on each triangle their steps ``dN`` and ``dD`` are constants, and the quotient
+    rule gives ``da = (dN - a dD) / D``. (A GPU estimates the same from neighbouring pixels,
+    ``dFdx``, to choose how much to blur a texture.)
+
+    Parameters
+    ----------
+    a : (K, P) array
+        The interpolated attribute.
+    one_over_w : (P,) array
+        ``D``, the interpolated ``1/w``.
+    dN, dD : (K, P) and (P,) arrays
+        The steps of ``N`` and ``D`` for one pixel.
+
+    Examples
+    --------
+    Next to a vertex with a = 0 at depth 1, a tenth of the way towards one with a = 1 at depth
+    3 is only a thirtieth of the way in space:
+
+    >>> smooth_derivative(np.array([[0.0]]), np.array([1.0]), np.array([[0.1 / 3]]),
+    ...                   np.array([0.1 / 3 - 0.1]))
+    array([[0.03333333]])
+    """
+    return (dN - a * dD) / one_over_w
