@@ -221,10 +221,10 @@ def _fragments(pieces: ClippedTriangles, width: int, height: int) -> Fragments:
     edges = _Edges.of(X, Y)
     rows = _rows(Y, edges, width, height)
 
+    # Coverage used the snapped positions; interpolation uses the exact ones, like llvmpipe.
     # Along a row everything is linear in the column x: per row item, a value at x = 0 and a
-    # step per pixel. Barycentrics b_i = E_i / (2 area); window depth z_w = sum(b_i z_i).
-    b_at_0 = (rows.K / area2[rows.piece, None]).T  # (3, R)
-    b_dx = (SUBPIXELS * edges.A / area2[:, None]).T  # (3, T)
+    # step per pixel. Barycentrics b_i = e_i / (2 area); window depth z_w = sum(b_i z_i).
+    b_at_0, b_dx, b_dy = _barycentric_planes(window, rows, X, Y, area2)
     z = window[..., 2].T  # (3, T)
     z_at_0 = np.sum(b_at_0 * z[:, rows.piece], axis=0)
     z_dx = np.sum(b_dx * z, axis=0)[rows.piece]
@@ -240,11 +240,37 @@ def _fragments(pieces: ClippedTriangles, width: int, height: int) -> Fragments:
         barycentric=line[0:3] + line[3:6] * x,
         clipped=pieces,
         barycentric_dx=b_dx,
-        barycentric_dy=(-SUBPIXELS * edges.B / area2[:, None]).T,  # rows go down, window y up
+        barycentric_dy=b_dy,
         row_item=item,
         row_spans=np.stack([rows.x_first, rows.x_last], axis=1),
         row_depths=np.stack([z_at_0, z_dx], axis=1),
     )
+
+
+def _barycentric_planes(
+    window: np.ndarray, rows: _Rows, X: np.ndarray, Y: np.ndarray, area2: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Screen-space barycentrics as planes: at column 0 of each row item, and per pixel step.
+
+    Returns ``b_at_0`` (3, R), ``b_dx`` (3, T) and ``b_dy`` (3, T), the last per image row
+    (downwards). From the exact window positions; where those are degenerate but the snapped
+    ones are not, from the snapped ones.
+    """
+    x, y = window[..., 0], window[..., 1]
+    exact_area2 = (x[:, 1] - x[:, 0]) * (y[:, 2] - y[:, 0]) - (x[:, 2] - x[:, 0]) * (
+        y[:, 1] - y[:, 0]
+    )
+    usable = np.abs(exact_area2) > 1e-9 * (1.0 + np.abs(x).max(axis=1) * np.abs(y).max(axis=1))
+    x = np.where(usable[:, None], x, X / SUBPIXELS)
+    y = np.where(usable[:, None], y, Y / SUBPIXELS)
+    area2 = np.where(usable, exact_area2, area2 / SUBPIXELS**2)
+    xj, yj = np.roll(x, -1, axis=1), np.roll(y, -1, axis=1)  # edge i runs j -> k
+    xk, yk = np.roll(x, -2, axis=1), np.roll(y, -2, axis=1)
+    a, b = (yj - yk) / area2[:, None], (xk - xj) / area2[:, None]  # e_i / (2 area) = a x + b y + c
+    c = -(a * xj + b * yj)
+    row_y = rows.y + 0.5
+    at_0 = a[rows.piece] * 0.5 + b[rows.piece] * row_y[:, None] + c[rows.piece]
+    return at_0.T, a.T, -b.T  # image rows go down, window y goes up
 
 
 def _take(a: np.ndarray | ClippedTriangles, keep: np.ndarray) -> np.ndarray | ClippedTriangles:
