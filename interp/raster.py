@@ -33,6 +33,8 @@ from interp.clipping import ClippedTriangles, clip_triangles
 SUBPIXELS = 256
 #: Interpolation modes: GLSL ``smooth``, GLSL ``noperspective``, and Quake-style spans.
 MODES = ("perspective", "affine", "subdivided")
+#: Bits of the fixed-point depth the depth test compares (GL's depth buffers have 24 or 32).
+DEPTH_BITS = 40
 #: Most fragments handled at once; bounds memory when triangles overlap a lot.
 CHUNK = 1 << 22
 #: Clip coordinates larger than this are surely a mistake (and would overflow).
@@ -362,14 +364,15 @@ def _nearest(
     Returns the drawn pixels (flat image indices, row 0 at the top, ascending) and the row item
     that won each.
 
-    Each fragment's key packs its depth, in fixed point with at least 32 bits (a GL depth
-    buffer has 24), above its row item's index, which grows in draw order. The smallest key per
-    pixel is then the nearest fragment, and among equally near ones the first drawn: as in
-    OpenGL, where a later fragment must be strictly nearer to replace an earlier one.
+    Each fragment's key packs its depth, rounded to DEPTH_BITS-bit fixed point (a GL depth
+    buffer has 24; rounding keeps equal depths equal despite float rounding), above its row
+    item's index, which grows in draw order. The smallest key per pixel is then the nearest
+    fragment, and among equally near ones the first drawn: as in OpenGL, where a later fragment
+    must be strictly nearer to replace an earlier one.
     """
     item_bits = max(len(rows.piece).bit_length(), 1)
-    depth_bits = 62 - item_bits
-    if depth_bits < 32:  # pragma: no cover - would need ~2**30 row items
+    depth_bits = min(DEPTH_BITS, 62 - item_bits)
+    if depth_bits < 24:  # pragma: no cover - would need ~2**38 row items
         raise ValueError("too many triangle rows for one image")
     cleared = np.int64(1) << np.int64(depth_bits + item_bits)  # depth 1: nothing passes
     keys = np.full(width * height, cleared, dtype=np.int64)
@@ -385,7 +388,7 @@ def _nearest(
         shift = first_fragment[start:stop] - first_fragment[start] - rows.x_first[start:stop]
         x = np.arange(item.size) - np.repeat(shift, n)
         z = np.repeat(z_at_0[start:stop], n) + np.repeat(z_dx[start:stop], n) * x
-        depth = (np.clip(z, 0.0, 1.0) * float(1 << depth_bits)).astype(np.int64)
+        depth = np.rint(np.clip(z, 0.0, 1.0) * float(1 << depth_bits)).astype(np.int64)
         np.minimum.at(keys, np.repeat(row_start[start:stop], n) + x, (depth << item_bits) | item)
         start = stop
     pixel = np.flatnonzero(keys < cleared)
