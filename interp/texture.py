@@ -119,15 +119,17 @@ def _square_wave(x: np.ndarray) -> np.ndarray:
 def _box_filtered_wave(x: np.ndarray, width: np.ndarray) -> np.ndarray:
     """Average of :func:`_square_wave` over ``[x - width/2, x + width/2]``, exactly.
 
-    The square wave's integral is a triangle wave, ``T(x) = 2 |frac(x/2) - 1/2|`` up to a
-    constant, so the average is ``(T(x + width/2) - T(x - width/2)) / width``.
+    The square wave's integral from 0 is a triangle wave, ``T(x) = 1 - 2 |frac(x/2) - 1/2|``
+    (up at even texels, down at odd ones), so the average is
+    ``(T(x + width/2) - T(x - width/2)) / width``.
     """
 
     def triangle(y: np.ndarray) -> np.ndarray:
         return 1.0 - 2.0 * np.abs(y / 2 - np.floor(y / 2) - 0.5)
 
     width = np.maximum(width, 1e-6)  # a point sample, as near as makes no difference
-    return (triangle(x - width / 2) - triangle(x + width / 2)) / width
+    average = (triangle(x + width / 2) - triangle(x - width / 2)) / width
+    return np.clip(average, -1.0, 1.0)  # rounding of a tiny width must not leave [-1, 1]
 
 
 def _footprint(p: np.ndarray, covered: np.ndarray) -> np.ndarray:

@@ -28,8 +28,11 @@ def random_scene(rng: np.random.Generator, n_triangles: int, behind: bool = Fals
     """
     P = interp.perspective(70, 4 / 3, 0.5, 20)
     centres = np.column_stack(
-        [rng.uniform(-3, 3, n_triangles), rng.uniform(-2, 2, n_triangles),
-         rng.uniform(-12, -2, n_triangles)]
+        [
+            rng.uniform(-3, 3, n_triangles),
+            rng.uniform(-2, 2, n_triangles),
+            rng.uniform(-12, -2, n_triangles),
+        ]
     )
     spread = 4.0 if behind else 1.5
     view = centres.repeat(3, axis=0) + rng.uniform(-spread, spread, (3 * n_triangles, 3))

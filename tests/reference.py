@@ -66,12 +66,7 @@ def _cast(clip, triangles, xn, yn, margin=0.0):
         lam, point = _solve(clip, tri, xn, yn)
         w, z = point[:, 3], point[:, 2]
         with np.errstate(all="ignore"):
-            hit = (
-                np.all(lam >= -margin, axis=1)
-                & (w > 0)
-                & (z >= -w)
-                & (z <= w)
-            )
+            hit = np.all(lam >= -margin, axis=1) & (w > 0) & (z >= -w) & (z <= w)
             depth = np.where(hit, z / np.where(w > 0, w, 1.0), np.inf)
         nearer = depth < best_depth
         second = np.where(nearer, best_depth, np.minimum(second, depth))

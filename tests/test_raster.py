@@ -113,8 +113,7 @@ def test_shared_edges_are_drawn_exactly_once(rng):
         clip = np.hstack([window / [width, height] * 2 - 1, np.zeros((8, 1)), np.ones((8, 1))])
         fan = [[0, 1 + i, 1 + (i + 1) % 7] for i in range(7)]
         counts = sum(
-            interp.rasterize(clip, np.zeros((8, 1)), [t], width, height)[1].astype(int)
-            for t in fan
+            interp.rasterize(clip, np.zeros((8, 1)), [t], width, height)[1].astype(int) for t in fan
         )
         assert counts.max() <= 1, "a pixel on a shared edge was drawn twice"
         union = interp.rasterize(clip, np.zeros((8, 1)), fan, width, height)[1]
@@ -134,7 +133,11 @@ def _inside_polygon(ring, width, height):
         def side(p, q, x, y):
             return (q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])
 
-        s1, s2, s3 = side(centre, a, cols, rows), side(a, b, cols, rows), side(b, centre, cols, rows)
+        s1, s2, s3 = (
+            side(centre, a, cols, rows),
+            side(a, b, cols, rows),
+            side(b, centre, cols, rows),
+        )
         inside |= (s1 >= 0) & (s2 > 0) & (s3 >= 0)
     return inside & ((cols != centre[0]) | (rows != centre[1]))
 
@@ -177,7 +180,9 @@ def test_subdivided_is_exact_at_anchors_and_between_affine_and_correct():
 
 
 def test_empty_and_off_screen_scenes():
-    values, covered = interp.rasterize(np.zeros((0, 4)), np.zeros((0, 2)), np.zeros((0, 3), int), 5, 4)
+    values, covered = interp.rasterize(
+        np.zeros((0, 4)), np.zeros((0, 2)), np.zeros((0, 3), int), 5, 4
+    )
     assert values.shape == (4, 5, 2) and not covered.any()
     behind = [[0, 0, 2, -1], [1, 0, 2, -1], [0, 1, 2, -1]]  # all behind the eye
     values, covered = interp.rasterize(behind, [[1.0]] * 3, [[0, 1, 2]], 5, 4)
