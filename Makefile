@@ -1,0 +1,35 @@
+# Two commands for a fresh clone (see README.md):
+#   make lessons   install everything into .venv and open the lessons in JupyterLab
+#   make test      install everything into .venv and run the whole test suite
+# Also: make bench (speed figures beside real OpenGL), make clean.
+
+PYTHON ?= python3
+VENV   ?= .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed-dev
+
+.PHONY: lessons test bench lint clean
+
+$(BIN)/python:
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+
+$(STAMP): pyproject.toml | $(BIN)/python
+	$(BIN)/python -m pip install --quiet -e ".[dev]"
+	touch $@
+
+lessons: $(STAMP)
+	$(BIN)/jupyter lab --notebook-dir=lessons
+
+lint: $(STAMP)
+	$(BIN)/ruff check interp tests
+	$(BIN)/ruff format --check interp tests
+
+test: lint
+	$(BIN)/python -m pytest
+
+bench: $(STAMP)
+	$(BIN)/python -m interp.bench
+
+clean:
+	rm -rf $(VENV) .pytest_cache .ruff_cache .hypothesis

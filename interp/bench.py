@@ -1,0 +1,113 @@
+"""Benchmark: ``python -m interp.bench`` prints how fast the library is, beside real OpenGL.
+
+For a ground plane of 512 triangles (16 x 16 quads) it times, at 256², 512² and 1024²:
+
+- ``rasterize`` in perspective and affine mode (clip, scan-convert, depth-test, interpolate,
+  spread into an image);
+- the same draw on Mesa's llvmpipe through EGL, plus reading both colour buffers back;
+- their ratio (target: at most 5x at 512²).
+
+And one slider step of the checkerboard lesson at 512² (both modes, texture lookup, error map;
+target: at most 30 ms).
+
+Everything is timed twice: first with the C allocator as Python starts it, then after
+:func:`interp._allocator.keep_freed_memory`, which the live apps turn on (it stops numpy's large
+temporaries from page-faulting back in on every step). Times are medians of repeated runs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import time
+from collections.abc import Callable
+from functools import partial
+
+import numpy as np
+
+import interp
+from interp._allocator import keep_freed_memory
+from interp.scenes import checker_views
+
+SIZES = (256, 512, 1024)
+RATIO_TARGET = 5.0
+STEP_TARGET_MS = 30.0
+
+
+def median_ms(run: Callable[[], object], repeat: int) -> float:
+    """Median wall time of ``run()`` in milliseconds, after one warm-up call."""
+    run()
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter()
+        run()
+        times.append(time.perf_counter() - start)
+    return 1e3 * float(np.median(times))
+
+
+def scene() -> interp.Scene:
+    """The benchmark's scene: 512 triangles filling most of the view."""
+    return interp.ground_plane(interp.Camera(height=1.0, pitch=20, yaw=30, distance=3.0))
+
+
+def opengl_renderers() -> dict | None:
+    try:
+        from interp import opengl
+
+        opengl.context()
+    except (ImportError, RuntimeError) as error:
+        print(f"(no OpenGL: {error})")
+        return None
+    return {
+        (n, mode): opengl.Renderer(n, n, mode) for n in SIZES for mode in ("perspective", "affine")
+    }
+
+
+def table(gl: dict | None, repeat: int) -> list[str]:
+    s = scene()
+    draw = partial(interp.rasterize, s.clip, s.uv, s.triangles)
+    lines = [f"{'size':>6} {'mode':>12} {'interp ms':>10} {'llvmpipe ms':>12} {'ratio':>7}"]
+    for n in SIZES:
+        for mode in ("perspective", "affine"):
+            ours = median_ms(partial(draw, n, n, mode), repeat)
+            if gl is None:
+                lines.append(f"{n:>5}² {mode:>12} {ours:>10.2f} {'-':>12} {'-':>7}")
+                continue
+            theirs = median_ms(partial(gl[(n, mode)].draw, s.clip, s.uv, s.triangles), repeat)
+            lines.append(f"{n:>5}² {mode:>12} {ours:>10.2f} {theirs:>12.2f} {ours / theirs:>6.2f}x")
+    subdivided = median_ms(partial(draw, 512, 512, "subdivided"), repeat)
+    lines.append(f"{512:>5}² {'subdivided':>12} {subdivided:>10.2f}")
+    for filtered in (True, False):
+        step = median_ms(partial(checker_views, s, 512, 512, 8, filtered), repeat)
+        texture = "filtered" if filtered else "nearest"
+        verdict = "ok" if step <= STEP_TARGET_MS else "over"
+        lines.append(
+            f"slider step 512², both modes, {texture} texture, error map: {step:.1f} ms "
+            f"(target {STEP_TARGET_MS:.0f} ms: {verdict})"
+        )
+    return lines
+
+
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(
+        prog="python -m interp.bench",
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("--repeat", type=int, default=15, help="runs per figure (default 15)")
+    args = parser.parse_args(argv)
+    gl = opengl_renderers()
+    renderer = interp.opengl.renderer() if gl else "none"
+    print(
+        f"interp benchmark: {platform.python_implementation()} {platform.python_version()}, "
+        f"numpy {np.__version__}, {platform.machine()}, OpenGL renderer: {renderer}"
+    )
+    print(f"scene: ground plane, {len(scene().triangles)} triangles; medians of {args.repeat} runs")
+    print("\n[default allocator]")
+    print("\n".join(table(gl, args.repeat)))
+    print(f"\n[keep_freed_memory() = {keep_freed_memory()}, as the live apps run]")
+    print("\n".join(table(gl, args.repeat)))
+
+
+if __name__ == "__main__":
+    main()

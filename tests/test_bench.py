@@ -1,0 +1,17 @@
+"""The benchmark runs and prints every figure the issue asks for."""
+
+from __future__ import annotations
+
+import re
+
+from interp import bench
+
+
+def test_benchmark_prints_all_figures(capsys):
+    bench.main(["--repeat", "1"])
+    out = capsys.readouterr().out
+    for size in bench.SIZES:
+        for mode in ("perspective", "affine"):
+            assert re.search(rf"{size}²\s+{mode}\s+\d+\.\d+", out)
+    assert out.count("slider step 512²") == 4  # filtered and nearest, both allocator settings
+    assert "[default allocator]" in out and "keep_freed_memory" in out
