@@ -22,8 +22,8 @@ lessons: $(STAMP)
 	$(BIN)/jupyter lab --notebook-dir=lessons
 
 lint: $(STAMP)
-	$(BIN)/ruff check interp tests
-	$(BIN)/ruff format --check interp tests
+	$(BIN)/ruff check --no-cache interp tests conftest.py
+	$(BIN)/ruff format --no-cache --check interp tests conftest.py
 
 test: lint
 	$(BIN)/python -m pytest

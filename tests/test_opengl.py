@@ -10,10 +10,11 @@ import os
 
 import numpy as np
 import pytest
-from conftest import random_scene
 
 import interp
 from interp.raster import SUBPIXELS
+
+from helpers import random_scene
 
 pytestmark = pytest.mark.opengl
 

@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from reference import render
 
 import interp
 from interp.raster import SUBPIXELS
+
+from helpers import random_scene
+from reference import render
 
 
 def compare(clip, attributes, triangles, width, height, mode, atol=1e-9):
@@ -57,8 +59,6 @@ def test_exact_on_the_subpixel_grid(mode, seed):
 @pytest.mark.parametrize("seed", range(8))
 def test_random_scenes_with_clipping(seed):
     rng = np.random.default_rng(100 + seed)
-    from conftest import random_scene
-
     clip, attributes, triangles = random_scene(rng, 8, behind=True)
     assert np.any(clip[:, 2] < -clip[:, 3]), "the scene should need near-plane clipping"
     checked, ambiguous = compare(clip, attributes, triangles, 48, 36, "perspective")
@@ -90,8 +90,6 @@ def test_quad_columns_follow_t_from_s_exactly():
 
 
 def test_both_windings_give_the_same_image(rng):
-    from conftest import random_scene
-
     clip, attributes, triangles = random_scene(rng, 10)
     forward = interp.rasterize(clip, attributes, triangles, 32, 24)
     backward = interp.rasterize(clip, attributes, triangles[:, ::-1], 32, 24)
@@ -190,8 +188,6 @@ def test_empty_and_off_screen_scenes():
 
 
 def test_fragments_barycentrics_sum_to_one_and_reproduce_positions(rng):
-    from conftest import random_scene
-
     clip, attributes, triangles = random_scene(rng, 6)
     frags = interp.fragments(clip, attributes, triangles, 40, 30)
     np.testing.assert_allclose(frags.barycentric.sum(axis=0), 1.0, atol=1e-12)
