@@ -8,6 +8,9 @@ VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-dev
 
+# JupyterLab refuses to start as root unless told; containers often run as root.
+LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
+
 .PHONY: lessons test bench lint clean
 
 $(BIN)/python:
@@ -19,7 +22,7 @@ $(STAMP): pyproject.toml | $(BIN)/python
 	touch $@
 
 lessons: $(STAMP)
-	$(BIN)/jupyter lab --notebook-dir=lessons
+	$(BIN)/jupyter lab --notebook-dir=lessons $(LAB_ARGS)
 
 lint: $(STAMP)
 	$(BIN)/ruff check --no-cache interp tests conftest.py
