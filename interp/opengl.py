@@ -183,6 +183,17 @@ def render(
     Parameters are those of :func:`interp.rasterize` (``mode`` is ``"perspective"`` for GLSL
     ``smooth`` or ``"affine"`` for ``noperspective``; at most 4 attribute columns).
     Values come back as float32, OpenGL's precision.
+
+    Examples
+    --------
+    >>> import interp
+    >>> scene = interp.ground_plane(height=1.0, pitch=30.0)
+    >>> gl = render(scene.clip, scene.uv, scene.triangles, 64, 48)
+    >>> ours, covered = interp.rasterize(scene.clip, scene.uv, scene.triangles, 64, 48)
+    >>> bool(np.array_equal(gl.covered, covered))
+    True
+    >>> float(np.abs(gl.values - ours)[covered].max()) < 1e-5
+    True
     """
     gl = Renderer(width, height, mode)
     try:

@@ -44,13 +44,18 @@ class Scene:
 MAX_QUADS = 256
 
 
-def ground_plane(camera: Camera | None = None, size: float = 8.0, quads: int = 16) -> Scene:
+def ground_plane(
+    camera: Camera | None = None, size: float = 8.0, quads: int = 16, **camera_parameters: float
+) -> Scene:
     """A textured square on the ground, seen by ``camera``.
 
     Parameters
     ----------
     camera : Camera, optional
-        The camera (height, pitch, yaw, distance, fovy, near, far, aspect); ``Camera()`` if None.
+        The camera; if None, ``Camera(**camera_parameters)``.
+    **camera_parameters : float
+        Slider values instead of a camera: height, pitch, yaw, distance, fovy, near, far,
+        aspect (see :class:`~interp.camera.Camera`).
     size : float
         Side of the square, > 0.
     quads : int
@@ -69,8 +74,13 @@ def ground_plane(camera: Camera | None = None, size: float = 8.0, quads: int = 1
            [0, 3, 2]])
     >>> scene.clip[:, 3]          # looking straight down: every vertex at depth 2
     array([2., 2., 2., 2.])
+    >>> len(ground_plane(height=1.0, pitch=20.0).triangles)   # slider values work too
+    512
     """
-    camera = Camera() if camera is None else camera
+    if camera is None:
+        camera = Camera(**camera_parameters)
+    elif camera_parameters:
+        raise TypeError("give either camera or camera parameters, not both")
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be an interp.Camera, got {type(camera).__name__}")
     size = _checks.real_in(size, "size", 0, None, low_open=True)
