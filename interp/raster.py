@@ -206,7 +206,7 @@ def _fragments(pieces: ClippedTriangles, width: int, height: int) -> Fragments:
     window = viewport(pieces.clip, width, height)
     X = np.rint(window[..., 0] * SUBPIXELS).astype(np.int64)  # snap to the subpixel grid
     Y = np.rint(window[..., 1] * SUBPIXELS).astype(np.int64)
-    area2 = (X[:, 1] - X[:, 0]) * (Y[:, 2] - Y[:, 0]) - (X[:, 2] - X[:, 0]) * (Y[:, 1] - Y[:, 0])
+    area2 = _twice_area(X, Y)
 
     # Both windings are drawn: turn clockwise triangles counter-clockwise, drop degenerate ones.
     pieces, X, Y, window = (_take(a, area2 != 0) for a in (pieces, X, Y, window))
@@ -259,20 +259,29 @@ def _barycentric_planes(
     ones are not, from the snapped ones.
     """
     x, y = window[..., 0], window[..., 1]
-    exact_area2 = (x[:, 1] - x[:, 0]) * (y[:, 2] - y[:, 0]) - (x[:, 2] - x[:, 0]) * (
-        y[:, 1] - y[:, 0]
-    )
+    exact_area2 = _twice_area(x, y)
     usable = np.abs(exact_area2) > 1e-9 * (1.0 + np.abs(x).max(axis=1) * np.abs(y).max(axis=1))
     x = np.where(usable[:, None], x, X / SUBPIXELS)
     y = np.where(usable[:, None], y, Y / SUBPIXELS)
-    area2 = np.where(usable, exact_area2, area2 / SUBPIXELS**2)
-    xj, yj = np.roll(x, -1, axis=1), np.roll(y, -1, axis=1)  # edge i runs j -> k
-    xk, yk = np.roll(x, -2, axis=1), np.roll(y, -2, axis=1)
-    a, b = (yj - yk) / area2[:, None], (xk - xj) / area2[:, None]  # e_i / (2 area) = a x + b y + c
-    c = -(a * xj + b * yj)
-    row_y = rows.y + 0.5
-    at_0 = a[rows.piece] * 0.5 + b[rows.piece] * row_y[:, None] + c[rows.piece]
+    area2 = np.where(usable, exact_area2, area2 / SUBPIXELS**2)[:, None]
+    a, b, c = (coefficient / area2 for coefficient in _edge_functions(x, y))  # b_i = a x + b y + c
+    at_0 = a[rows.piece] * 0.5 + b[rows.piece] * (rows.y + 0.5)[:, None] + c[rows.piece]
     return at_0.T, a.T, -b.T  # image rows go down, window y goes up
+
+
+def _twice_area(x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Twice the signed area of each triangle (T, 3): positive when counter-clockwise."""
+    return (x[:, 1] - x[:, 0]) * (y[:, 2] - y[:, 0]) - (x[:, 2] - x[:, 0]) * (y[:, 1] - y[:, 0])
+
+
+def _edge_functions(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(A, B, C)``, each (T, 3): ``e_i(x, y) = A_i x + B_i y + C_i`` is zero on the edge
+    opposite vertex i (from vertex j = i + 1 to k = i + 2) and equals twice the area at vertex i.
+    """
+    xj, yj = np.roll(x, -1, axis=1), np.roll(y, -1, axis=1)
+    xk, yk = np.roll(x, -2, axis=1), np.roll(y, -2, axis=1)
+    A, B = yj - yk, xk - xj
+    return A, B, -(A * xj + B * yj)
 
 
 def _take(a: np.ndarray | ClippedTriangles, keep: np.ndarray) -> np.ndarray | ClippedTriangles:
@@ -307,11 +316,9 @@ class _Edges:
 
     @classmethod
     def of(cls, X: np.ndarray, Y: np.ndarray) -> _Edges:
-        Xj, Yj = np.roll(X, -1, axis=1), np.roll(Y, -1, axis=1)  # edge i runs j -> k
-        Xk, Yk = np.roll(X, -2, axis=1), np.roll(Y, -2, axis=1)
-        A, B = Yj - Yk, Xk - Xj
-        C = -(A * Xj + B * Yj)
-        dx, dy = Xk - Xj, Yk - Yj  # counter-clockwise, y up: the interior is on the left
+        A, B, C = _edge_functions(X, Y)
+        dx, dy = B, -A  # the direction of edge i, from vertex j to k
+        # Counter-clockwise with y up, the interior lies to the left of every edge.
         left = dy < 0  # going down, interior to the right (+x)
         bottom = (dy == 0) & (dx > 0)  # going right, interior above
         return cls(A, B, C, np.where(left | bottom, 0, 1))
