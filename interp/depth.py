@@ -1,0 +1,97 @@
+"""Depth: what a depth buffer stores, and how finely it can tell depths apart.
+
+Glossary
+--------
+w      : view depth, the distance in front of the camera (clip-space w), > 0.
+near, far : the clipping distances of :func:`interp.perspective`.
+NDC z  : ``z_clip / w``, from -1 at the near plane to +1 at the far plane. It equals
+         ``A + B / w`` (A, B from the projection matrix), so it is an affine function of 1/w,
+         and 1/w is linear on the screen: a depth buffer may interpolate it linearly
+         (blog post on attribute interpolation; Lengyel).
+window z : ``(NDC z + 1) / 2`` in [0, 1], what the depth buffer stores.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from interp import _checks
+
+
+def _planes(near: object, far: object) -> tuple[float, float]:
+    near = _checks.real_in(near, "near", 0, None, low_open=True)
+    far = _checks.real(far, "far")
+    if far <= near:
+        raise ValueError(f"far must be greater than near ({near:g}), got {far:g}")
+    return near, far
+
+
+def _view_depth(w: object) -> np.ndarray:
+    w = _checks.float_array(w, "w")
+    if np.any(w <= 0):
+        raise ValueError("w must be > 0 (a point in front of the camera)")
+    return w
+
+
+def ndc_depth(w: object, near: float, far: float) -> np.ndarray | float:
+    """NDC z at view depth ``w``: ``(far + near)/(far - near) - 2 far near / ((far - near) w)``.
+
+    Examples
+    --------
+    >>> ndc_depth([1.0, 10.0], near=1.0, far=10.0)
+    array([-1.,  1.])
+    """
+    w = _view_depth(w)
+    near, far = _planes(near, far)
+    z = (far + near) / (far - near) - 2 * far * near / ((far - near) * w)
+    return z.item() if z.ndim == 0 else z
+
+
+def window_depth(w: object, near: float, far: float) -> np.ndarray | float:
+    """What the depth buffer stores for view depth ``w``: ``(NDC z + 1) / 2``, in [0, 1].
+
+    Examples
+    --------
+    >>> window_depth(1.0, near=1.0, far=10.0), window_depth(10.0, near=1.0, far=10.0)
+    (0.0, 1.0)
+    >>> round(window_depth(2.0, near=1.0, far=10.0), 4)   # 1/9 of the way in w, over half in z
+    0.5556
+    """
+    z = (np.asarray(ndc_depth(w, near, far)) + 1) / 2
+    return z.item() if z.ndim == 0 else z
+
+
+def depth_resolution(
+    w: object, near: float, far: float, buffer: str = "float32"
+) -> np.ndarray | float:
+    """The smallest change of view depth the depth buffer notices at depth ``w``.
+
+    One step of the stored window z (the float32 spacing there, or ``2**-24`` for a 24-bit
+    fixed-point buffer) divided by how fast window z changes with w,
+    ``d z_window / d w = far near / ((far - near) w**2)``. It grows like ``w**2 / near``: halve
+    ``near`` and every depth gets twice as coarse.
+
+    Parameters
+    ----------
+    w : array_like
+        View depths, > 0.
+    near, far : float
+        The clipping distances.
+    buffer : {"float32", "fixed24"}
+        The depth buffer's format.
+
+    Examples
+    --------
+    >>> r = depth_resolution([1.0, 100.0], near=0.1, far=1000.0, buffer="fixed24")
+    >>> bool(r[1] / r[0] > 9999)      # 100 times further: 10000 times coarser
+    True
+    """
+    w = _view_depth(w)
+    near, far = _planes(near, far)
+    buffer = _checks.choice(buffer, "buffer", ("float32", "fixed24"))
+    stored = (((far + near) / (far - near) - 2 * far * near / ((far - near) * w) + 1) / 2).astype(
+        np.float32
+    )
+    step = np.spacing(stored).astype(np.float64) if buffer == "float32" else 2.0**-24
+    result = step * (far - near) * w**2 / (far * near)
+    return result.item() if np.ndim(result) == 0 else result
