@@ -5,6 +5,10 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+import matplotlib
+
+matplotlib.use("Agg")  # no screen: every figure in the tests and doctests is drawn with Agg
+
 
 def pytest_ignore_collect(collection_path: Path, config) -> bool | None:
     """Skip interp/opengl.py's doctests where no OpenGL context can be made, except in CI.

@@ -14,7 +14,7 @@ eye    : where the camera is; target: a point it looks at; up: which way is up.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -112,8 +112,10 @@ class Camera:
     """A camera above the ground plane ``y = 0``, described by the lessons' slider values.
 
     The camera stands ``distance`` away from the world origin horizontally, at ``height``
-    above the ground, on the side given by ``yaw``; it faces the origin's direction horizontally
-    and tilts down by ``pitch`` degrees (90 looks straight down, 0 at the horizon).
+    above the ground, on the side given by ``yaw``; it faces the origin's direction horizontally,
+    tilts down by ``pitch`` degrees (90 looks straight down, 0 at the horizon) and turns the
+    picture by ``roll`` degrees about its line of sight. (Without roll, every image row of the
+    ground lies at one depth, so affine interpolation is exact along rows: Doom's floors.)
 
     Parameters
     ----------
@@ -132,6 +134,8 @@ class Camera:
         Clipping distances, ``0 < near < far``.
     aspect : float
         Width / height of the image, > 0.
+    roll : float
+        Degrees of rotation about the line of sight, any finite value.
 
     Examples
     --------
@@ -150,12 +154,14 @@ class Camera:
     near: float = 0.1
     far: float = 100.0
     aspect: float = 1.0
+    roll: float = 0.0
 
     def __post_init__(self) -> None:
         _checks.real(self.height, "height")
         _checks.real_in(self.pitch, "pitch", -89, 90)
         _checks.real(self.yaw, "yaw")
         _checks.real_in(self.distance, "distance", 0, None)
+        _checks.real(self.roll, "roll")
         perspective(self.fovy, self.aspect, self.near, self.far)  # checks the rest
 
     @property
@@ -176,10 +182,27 @@ class Camera:
         rotate_pitch = np.array(  # tilt the view down by pitch: turn about +x by +pitch
             [[1, 0, 0], [0, np.cos(pitch), -np.sin(pitch)], [0, np.sin(pitch), np.cos(pitch)]]
         )
+        roll = np.radians(self.roll)
+        rotate_roll = np.array(  # turn the picture: about the view axis -z
+            [[np.cos(roll), np.sin(roll), 0], [-np.sin(roll), np.cos(roll), 0], [0, 0, 1]]
+        )
         view = np.eye(4)
-        view[:3, :3] = rotate_pitch @ rotate_yaw
+        view[:3, :3] = rotate_roll @ rotate_pitch @ rotate_yaw
         view[:3, 3] = -view[:3, :3] @ self.eye
         return view
+
+    def fitted(self, width: int, height: int) -> Camera:
+        """The same camera with ``aspect = width / height``, for an image of that size.
+
+        Examples
+        --------
+        >>> Camera().fitted(640, 480).aspect
+        1.3333333333333333
+        """
+        return replace(
+            self,
+            aspect=_checks.positive_int(width, "width") / _checks.positive_int(height, "height"),
+        )
 
     @property
     def projection(self) -> np.ndarray:

@@ -92,6 +92,6 @@ def depth_resolution(
     stored = (((far + near) / (far - near) - 2 * far * near / ((far - near) * w) + 1) / 2).astype(
         np.float32
     )
-    step = np.spacing(stored).astype(np.float64) if buffer == "float32" else 2.0**-24
+    step = np.abs(np.spacing(stored)).astype(np.float64) if buffer == "float32" else 2.0**-24
     result = step * (far - near) * w**2 / (far * near)
     return result.item() if np.ndim(result) == 0 else result

@@ -43,6 +43,10 @@ class Scene:
 #: Most quads per side of the ground plane (4 * 256**2 vertices would already be silly).
 MAX_QUADS = 256
 
+#: The lessons' standard view: a 4 x 4 quad wholly in front of a camera looking down at it.
+LESSON_SIZE = 4.0
+LESSON_CAMERA = Camera(height=1.0, pitch=15.0, yaw=0.0, distance=3.0)
+
 
 def ground_plane(
     camera: Camera | None = None, size: float = 8.0, quads: int = 16, **camera_parameters: float

@@ -1,0 +1,182 @@
+"""Figures of lesson 5: attributes along a line, mistakes, and colour across a triangle."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+
+from interp import lerp, mistakes
+from interp.camera import Camera
+from interp.plots._style import AFFINE, CORRECT, OTHERS, markevery
+from interp.raster import rasterize
+from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
+
+
+class MistakesAlongALine:
+    """An attribute along the image of a segment: right, affine, and two classic mistakes.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> plot = MistakesAlongALine(plt.subplots()[1], w1=1.0, w2=3.0)
+    >>> float(plot.lines["perspective-correct"].get_ydata()[50])
+    0.25
+    """
+
+    def __init__(
+        self,
+        ax: Axes,
+        a1: float = 0.0,
+        a2: float = 1.0,
+        w1: float = 1.0,
+        w2: float = 6.0,
+        near: float = 0.5,
+        far: float = 20.0,
+        points: int = 101,
+    ) -> None:
+        self.ax = ax
+        self.params = {"a1": a1, "a2": a2, "w1": w1, "w2": w2, "near": near, "far": far}
+        self.s = np.linspace(0, 1, points)
+        every = markevery(points)
+        styles = {
+            "perspective-correct": CORRECT,
+            "affine": AFFINE,
+            "divided by window z": OTHERS[0],
+            "divided too early": OTHERS[1],
+        }
+        self.lines = {
+            name: ax.plot([], [], markevery=every, **{**style, "label": name})[0]
+            for name, style in styles.items()
+        }
+        ax.set_xlim(0, 1)
+        ax.set_xlabel("screen parameter s")
+        ax.set_ylabel("attribute")
+        ax.legend(loc="upper left")
+        self.update()
+
+    def update(self, **params: float) -> None:
+        """Redraw for new ``a1``, ``a2``, ``w1``, ``w2``, ``near`` or ``far``."""
+        self.params.update(params)
+        p, s = self.params, self.s
+        curves = {
+            "perspective-correct": lerp.lerp_perspective(p["a1"], p["a2"], p["w1"], p["w2"], s),
+            "affine": lerp.lerp_affine(p["a1"], p["a2"], s),
+            "divided by window z": mistakes.lerp_with_window_z(
+                p["a1"],
+                p["a2"],
+                np.clip(p["w1"], p["near"], p["far"]),
+                np.clip(p["w2"], p["near"], p["far"]),
+                s,
+                p["near"],
+                p["far"],
+            ),
+            "divided too early": mistakes.lerp_divided_too_early(
+                p["a1"], p["a2"], p["w1"], p["w2"], s
+            ),
+        }
+        for name, y in curves.items():
+            self.lines[name].set_data(s, y)
+        values = np.concatenate(list(curves.values()))
+        pad = 0.05 * max(np.ptp(values), 1e-9)
+        self.ax.set_ylim(values.min() - pad, values.max() + pad)
+
+
+class ClipVertexMistake:
+    """A segment from A (in front) to B (behind the near plane), clipped to A-C at the near
+    plane: the attribute along the image of A-C when C gets its own attribute, and when it
+    wrongly keeps B's.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> plot = ClipVertexMistake(plt.subplots()[1], w1=3.0, w2=-1.0, near=1.0)
+    >>> float(plot.right.get_ydata()[-1]), float(plot.wrong.get_ydata()[-1])
+    (0.5, 1.0)
+    """
+
+    def __init__(
+        self,
+        ax: Axes,
+        a1: float = 0.0,
+        a2: float = 1.0,
+        w1: float = 4.0,
+        w2: float = -2.0,
+        near: float = 0.5,
+        points: int = 101,
+    ) -> None:
+        self.ax = ax
+        self.params = {"a1": a1, "a2": a2, "w1": w1, "w2": w2, "near": near}
+        self.s = np.linspace(0, 1, points)
+        every = markevery(points)
+        (self.right,) = ax.plot(
+            [], [], markevery=every, **{**CORRECT, "label": "C gets its own attribute"}
+        )
+        (self.wrong,) = ax.plot(
+            [], [], markevery=every, **{**OTHERS[1], "label": "C keeps B's attribute"}
+        )
+        ax.set_xlim(0, 1)
+        ax.set_xlabel("s from A to C (C on the near plane)")
+        ax.set_ylabel("attribute")
+        ax.legend(loc="upper left")
+        self.update()
+
+    def update(self, **params: float) -> None:
+        """Redraw for new ``a1``, ``a2``, ``w1`` (> near), ``w2`` (< near) or ``near``."""
+        self.params.update(params)
+        p, s = self.params, self.s
+        a_c = mistakes.clip_vertex_attribute(p["a1"], p["a2"], p["w1"], p["w2"], p["near"])
+        self.right.set_data(s, lerp.lerp_perspective(p["a1"], a_c, p["w1"], p["near"], s))
+        self.wrong.set_data(
+            s,
+            mistakes.lerp_forgetting_the_clip_vertex(
+                p["a1"], p["a2"], p["w1"], p["w2"], s, p["near"]
+            ),
+        )
+        low, high = sorted((p["a1"], p["a2"]))
+        pad = 0.05 * max(high - low, 1e-9)
+        self.ax.set_ylim(low - pad, high + pad)
+
+
+#: Red, green and blue at the corners of the ground plane's first triangle.
+CORNER_COLOURS = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 1.0, 0.0]])
+
+
+class ColourTriangle:
+    """A colour gradient across a ground-plane quad, drawn with one interpolation mode.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> image = ColourTriangle(plt.subplots()[1], Camera(height=1, pitch=30), "affine", 32, 24)
+    >>> image.image.get_array().shape
+    (24, 32, 3)
+    """
+
+    def __init__(
+        self,
+        ax: Axes,
+        camera: Camera | None = None,
+        mode: str = "perspective",
+        width: int = 240,
+        height: int = 180,
+        whole_quad: bool = True,
+    ) -> None:
+        self.ax = ax
+        self.camera = camera or LESSON_CAMERA
+        self.mode, self.width, self.height = mode, width, height
+        self.whole_quad = whole_quad  # False: one triangle, its colours its barycentrics
+        self.image = ax.imshow(np.zeros((height, width, 3)), interpolation="nearest")
+        ax.set_axis_off()
+        self.update()
+
+    def update(self, camera: Camera | None = None, mode: str | None = None) -> None:
+        """Redraw for a new ``camera`` or ``mode``."""
+        self.camera = camera or self.camera
+        self.mode = mode or self.mode
+        scene = ground_plane(self.camera.fitted(self.width, self.height), LESSON_SIZE, quads=1)
+        triangles = scene.triangles if self.whole_quad else scene.triangles[:1]
+        colours, covered = rasterize(
+            scene.clip, CORNER_COLOURS, triangles, self.width, self.height, self.mode
+        )
+        self.image.set_data(np.where(covered[..., None], np.clip(colours, 0, 1), 1.0))
+        self.ax.set_title(self.mode, fontsize=9)

@@ -1,0 +1,145 @@
+"""Figures of lesson 6: checkerboards, affine beside perspective-correct, and the error."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+from matplotlib.axes import Axes
+
+from interp.camera import Camera
+from interp.scenes import LESSON_CAMERA, LESSON_SIZE, CheckerViews, checker_views, ground_plane
+
+
+class CheckerPanels:
+    """Affine | perspective-correct | ``|Δ(u, v)|`` in texels, for one camera.
+
+    Parameters
+    ----------
+    axes : three Axes
+    camera : Camera
+    frequency : float
+        Checks per side of the plane.
+    width, height : int
+        Pixels per panel.
+    quads : int
+        Squares per side of the ground plane (1: one quad, two triangles: the seam shows).
+    filtered : bool
+        Anti-alias the checkerboard.
+    max_error : float
+        Top of the error colour scale, in texels.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> panels = CheckerPanels(plt.subplots(1, 3)[1], Camera(pitch=90, height=2, distance=0),
+    ...                        width=32, height=24)
+    >>> float(panels.views.error.max())        # looking straight down: nothing to correct
+    0.0
+    """
+
+    def __init__(
+        self,
+        axes: Sequence[Axes],
+        camera: Camera | None = None,
+        frequency: float = 8,
+        width: int = 320,
+        height: int = 240,
+        quads: int = 1,
+        filtered: bool = True,
+        max_error: float = 2.0,
+    ) -> None:
+        self.axes = list(axes)
+        self.params = {
+            "camera": camera or LESSON_CAMERA,
+            "frequency": frequency,
+            "width": width,
+            "height": height,
+            "quads": quads,
+            "filtered": filtered,
+        }
+        blank = np.zeros((height, width))
+        grey = {"cmap": "gray", "vmin": 0, "vmax": 1}
+        self.affine = self.axes[0].imshow(blank, **grey)
+        self.correct = self.axes[1].imshow(blank, **grey)
+        self.error = self.axes[2].imshow(blank, cmap="viridis", vmin=0, vmax=max_error)
+        for ax, title in zip(
+            self.axes, ("affine", "perspective-correct", "|Δ(u, v)| in texels"), strict=True
+        ):
+            ax.set_title(title, fontsize=9)
+            ax.set_xticks([])
+            ax.set_yticks([])
+        self.colorbar = self.axes[2].figure.colorbar(self.error, ax=self.axes[2], shrink=0.8)
+        self.update()
+
+    def update(self, **params: object) -> None:
+        """Redraw for a new ``camera``, ``frequency``, ``width``, ``height``, ``quads`` or
+        ``filtered``."""
+        self.params.update(params)
+        p = self.params
+        camera = p["camera"].fitted(int(p["width"]), int(p["height"]))
+        scene = ground_plane(camera, size=LESSON_SIZE, quads=int(p["quads"]))
+        self.views: CheckerViews = checker_views(
+            scene, int(p["width"]), int(p["height"]), float(p["frequency"]), bool(p["filtered"])
+        )
+        extent = (-0.5, int(p["width"]) - 0.5, int(p["height"]) - 0.5, -0.5)
+        for image, data in (
+            (self.affine, self.views.affine),
+            (self.correct, self.views.correct),
+            (self.error, self.views.error),
+        ):
+            image.set_data(data)
+            image.set_extent(extent)
+        worst = float(self.views.error.max())
+        self.axes[2].set_title(f"|Δ(u, v)| in texels (max {worst:.2f})", fontsize=9)
+
+
+class UVImages:
+    """The interpolated u and v as images, for one mode.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> uv = UVImages(plt.subplots(1, 2)[1], width=16, height=12)
+    >>> uv.images[0].get_array().shape
+    (12, 16)
+    """
+
+    def __init__(
+        self,
+        axes: Sequence[Axes],
+        camera: Camera | None = None,
+        mode: str = "perspective",
+        width: int = 240,
+        height: int = 180,
+        quads: int = 1,
+    ) -> None:
+        self.axes = list(axes)
+        self.params = {
+            "camera": camera or LESSON_CAMERA,
+            "mode": mode,
+            "width": width,
+            "height": height,
+            "quads": quads,
+        }
+        self.images = [
+            ax.imshow(np.zeros((height, width)), cmap="cividis", vmin=0, vmax=1) for ax in self.axes
+        ]
+        for ax in self.axes:
+            ax.set_xticks([])
+            ax.set_yticks([])
+        self.update()
+
+    def update(self, **params: object) -> None:
+        """Redraw for a new ``camera``, ``mode``, ``width``, ``height`` or ``quads``."""
+        self.params.update(params)
+        p = self.params
+        camera = p["camera"].fitted(int(p["width"]), int(p["height"]))
+        scene = ground_plane(camera, size=LESSON_SIZE, quads=int(p["quads"]))
+        views = checker_views(scene, int(p["width"]), int(p["height"]), filtered=False)
+        mode = str(p["mode"])
+        uv = views.uv_image("perspective" if mode == "perspective" else "affine")
+        for k, (image, ax) in enumerate(zip(self.images, self.axes, strict=True)):
+            image.set_data(np.where(views.covered, uv[..., k], np.nan))
+            image.set_extent((-0.5, int(p["width"]) - 0.5, int(p["height"]) - 0.5, -0.5))
+            ax.set_title(f"{'uv'[k]} ({mode})", fontsize=9)

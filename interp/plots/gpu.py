@@ -1,0 +1,165 @@
+"""Figures of lesson 7: clipping as the camera moves through a plane, and the approximation lab."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.collections import LineCollection
+
+from interp import approximation
+from interp.camera import Camera
+from interp.plots._style import AFFINE, CORRECT
+from interp.raster import fragments, interpolate, viewport
+from interp.scenes import LESSON_SIZE, ground_plane
+from interp.texture import checkerboard
+
+
+class ClippingView:
+    """The ground plane drawn perspective-correctly, with the outline of every triangle that
+    clipping made: watch new vertices appear as the camera nears the plane.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> view = ClippingView(plt.subplots()[1], Camera(height=0.02, pitch=10, near=0.05),
+    ...                     width=64, height=48)
+    >>> view.counts["pieces"] > view.counts["visible triangles"]     # clipping split some
+    True
+    """
+
+    def __init__(
+        self,
+        ax: Axes,
+        camera: Camera | None = None,
+        quads: int = 2,
+        width: int = 320,
+        height: int = 240,
+        frequency: float = 8,
+    ) -> None:
+        self.ax = ax
+        self.params = {
+            "camera": camera or Camera(height=0.3, pitch=15, distance=1.0),
+            "quads": quads,
+            "width": width,
+            "height": height,
+            "frequency": frequency,
+        }
+        self.image = ax.imshow(np.zeros((height, width)), cmap="gray", vmin=0, vmax=1)
+        self.outlines = LineCollection([], colors=CORRECT["color"], linewidths=1.0)
+        ax.add_collection(self.outlines)
+        ax.set_xticks([])
+        ax.set_yticks([])
+        self.update()
+
+    def update(self, **params: object) -> None:
+        """Redraw for a new ``camera``, ``quads``, ``width``, ``height`` or ``frequency``."""
+        self.params.update(params)
+        p = self.params
+        width, height = int(p["width"]), int(p["height"])
+        camera = p["camera"].fitted(width, height)
+        scene = ground_plane(camera, size=LESSON_SIZE, quads=int(p["quads"]))
+        frags = fragments(scene.clip, scene.uv, scene.triangles, width, height)
+        uv = interpolate(frags, "perspective")
+        covered = frags.covered
+        self.image.set_data(
+            checkerboard(
+                uv[..., 0],
+                uv[..., 1],
+                float(p["frequency"]),
+                filtered=True,
+                covered=covered,
+                background=0.75,
+            )
+        )
+        self.image.set_extent((-0.5, width - 0.5, height - 0.5, -0.5))
+        window = viewport(frags.clipped.clip, width, height)[..., :2]
+        window[..., 1] = height - window[..., 1]  # image rows go down
+        self.outlines.set_segments([np.vstack([tri, tri[:1]]) - 0.5 for tri in window])
+        self.ax.set_xlim(-0.5, width - 0.5)
+        self.ax.set_ylim(height - 0.5, -0.5)
+        visible = len(np.unique(frags.clipped.source))
+        self.counts = {"pieces": len(frags.clipped), "visible triangles": visible}
+        self.ax.set_title(
+            f"{visible} triangles in view became {len(frags.clipped)} after clipping", fontsize=9
+        )
+
+
+#: The lab's camera: rolled, so that depth varies along image rows (see Camera's roll).
+LAB_CAMERA = Camera(height=1.0, pitch=15.0, yaw=0.0, distance=3.0, roll=30.0)
+
+
+class ApproximationLab:
+    """Mean error in texels against divides per pixel: Quake's spans against PlayStation-era
+    tessellation, for one camera.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> lab = ApproximationLab(plt.subplots()[1], width=48, height=36)
+    >>> len(lab.spans.get_xdata()), len(lab.tessellation.get_xdata())   # N = 1 is exact
+    (6, 6)
+    """
+
+    def __init__(
+        self,
+        ax: Axes,
+        camera: Camera | None = None,
+        width: int = 192,
+        height: int = 144,
+        frequency: float = 8,
+    ) -> None:
+        self.ax = ax
+        self.params = {
+            "camera": camera or LAB_CAMERA,
+            "width": width,
+            "height": height,
+            "frequency": frequency,
+        }
+        (self.spans,) = ax.plot([], [], **{**CORRECT, "label": "spans: exact every N pixels"})
+        (self.tessellation,) = ax.plot(
+            [], [], **{**AFFINE, "label": "tessellation: n x n quads, affine"}
+        )
+        self.notes: list = []
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("divides per pixel drawn")
+        ax.set_ylabel("mean |Δ(u, v)| in texels")
+        ax.legend(loc="upper right")
+        self.update()
+
+    def update(self, **params: object) -> None:
+        """Redraw for a new ``camera``, ``width``, ``height`` or ``frequency``."""
+        self.params.update(params)
+        p = self.params
+        size = (int(p["width"]), int(p["height"]), float(p["frequency"]))
+        spans = approximation.span_costs(p["camera"], *size)
+        tess = approximation.tessellation_costs(p["camera"], *size)
+        for note in self.notes:
+            note.remove()
+        self.notes = []
+        for line, costs, label in (
+            (self.spans, spans, "N={:d}"),
+            (self.tessellation, tess, "n={:d}"),
+        ):
+            shown = costs.mean_error > 0  # exact settings (N = 1) have no place on a log axis
+            x, y, settings = (
+                a[shown] for a in (costs.divides_per_pixel, costs.mean_error, costs.setting)
+            )
+            line.set_data(x, y)
+            for xi, yi, setting in zip(x, y, settings, strict=True):
+                self.notes.append(
+                    self.ax.annotate(
+                        label.format(int(setting)),
+                        (xi, yi),
+                        xytext=(4, 2),
+                        textcoords="offset points",
+                        fontsize=7,
+                        color=line.get_color(),
+                    )
+                )
+        xs = np.concatenate([spans.divides_per_pixel, tess.divides_per_pixel])
+        ys = np.concatenate([spans.mean_error, tess.mean_error])
+        keep = (xs > 0) & (ys > 0)
+        if keep.any():
+            self.ax.set_xlim(xs[keep].min() / 2, xs[keep].max() * 3)
+            self.ax.set_ylim(ys[keep].min() / 3, ys[keep].max() * 3)
