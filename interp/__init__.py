@@ -9,11 +9,15 @@ The public names, by the lesson that introduces them:
 - Triangles (:mod:`interp.raster`, :mod:`interp.clipping`, :mod:`interp.barycentric`):
   :func:`rasterize`, :func:`fragments`, :func:`interpolate`, :func:`clip_triangles`,
   :func:`viewport`.
+- Depth (:mod:`interp.depth`): :func:`ndc_depth`, :func:`window_depth`, :func:`depth_resolution`.
 - Textures and scenes: :func:`checkerboard`, :func:`texel_error`, :func:`ground_plane`.
+- For the lessons: :mod:`interp.plots` (figures), :mod:`interp.apps` (live sliders),
+  :mod:`interp.check` (exercise checkers), :mod:`interp.mistakes`, :mod:`interp.approximation`.
 """
 
 from interp.camera import Camera, look_at, perspective
 from interp.clipping import ClippedTriangles, clip_triangles
+from interp.depth import depth_resolution, ndc_depth, window_depth
 from interp.lerp import (
     lerp_affine,
     lerp_inverse_w,
@@ -34,6 +38,7 @@ __all__ = [
     "Scene",
     "checkerboard",
     "clip_triangles",
+    "depth_resolution",
     "fragments",
     "ground_plane",
     "interpolate",
@@ -41,6 +46,7 @@ __all__ = [
     "lerp_inverse_w",
     "lerp_perspective",
     "look_at",
+    "ndc_depth",
     "perspective",
     "project_to_image_plane",
     "rasterize",
@@ -48,4 +54,5 @@ __all__ = [
     "t_from_s",
     "texel_error",
     "viewport",
+    "window_depth",
 ]

@@ -15,7 +15,7 @@ import numpy as np
 
 from interp import _checks
 from interp.camera import Camera
-from interp.raster import Fragments, fragment_footprints, fragment_values, fragments
+from interp.raster import MODES, Fragments, fragment_footprints, fragment_values, fragments
 from interp.texture import MAX_FREQUENCY, checker
 
 
@@ -108,21 +108,26 @@ class CheckerViews:
 
     Attributes
     ----------
-    correct, affine : (H, W) float arrays
-        The checkerboard, perspective-correct and affine (1 white, 0 black, ``background``
-        where nothing is drawn).
+    correct : (H, W) float array
+        The checkerboard, perspective-correct (1 white, 0 black, ``background`` where nothing
+        is drawn).
+    approximate : (H, W) float array
+        The same in ``mode`` (affine, or Quake's subdivided spans).
     error : (H, W) float array
         ``|Δ(u, v)|`` between the two, in texels; 0 where nothing is drawn.
+    mode : str
+        The approximate image's interpolation mode.
     fragments : Fragments
         What the rasterizer drew (coverage, depth, barycentrics).
     uv : dict
-        Per-fragment texture coordinates, ``{"perspective": (2, P), "affine": (2, P)}``; see
+        Per-fragment texture coordinates, ``{"perspective": (2, P), mode: (2, P)}``; see
         :meth:`uv_image` for them as images.
     """
 
     correct: np.ndarray
-    affine: np.ndarray
+    approximate: np.ndarray
     error: np.ndarray
+    mode: str
     fragments: Fragments
     uv: dict[str, np.ndarray]
 
@@ -143,8 +148,11 @@ def checker_views(
     frequency: float = 8,
     filtered: bool = True,
     background: float = 0.5,
+    mode: str = "affine",
+    span: int = 16,
 ) -> CheckerViews:
-    """Draw ``scene`` with a checkerboard, perspective-correct and affine, and their difference.
+    """Draw ``scene`` with a checkerboard, perspective-correct and approximately, and their
+    difference.
 
     One slider step of the checkerboard lesson: the triangles are scan-converted once and
     interpolated both ways; everything is computed per drawn pixel and spread into images last.
@@ -162,6 +170,10 @@ def checker_views(
         screen derivatives of (u, v)) or sample it at the pixel centre.
     background : float
         Image value where nothing is drawn.
+    mode : {"affine", "subdivided", "perspective"}
+        How to draw the approximate image.
+    span : int
+        For ``"subdivided"``: pixels between exact values.
 
     Returns
     -------
@@ -182,9 +194,12 @@ def checker_views(
     if not isinstance(filtered, (bool, np.bool_)):
         raise TypeError("filtered must be True or False")
     background = _checks.real(background, "background")
+    mode = _checks.choice(mode, "mode", MODES)
+    span = _checks.positive_int(span, "span")
 
     frags = fragments(scene.clip, scene.uv, scene.triangles, width, height)
-    uv = {mode: fragment_values(frags, mode) for mode in ("perspective", "affine")}
+    uv = {"perspective": fragment_values(frags, "perspective")}
+    uv[mode] = fragment_values(frags, mode, span)
 
     def texture(mode: str) -> np.ndarray:
         p, q = uv[mode] * frequency  # texel coordinates
@@ -193,11 +208,12 @@ def checker_views(
         footprint_p, footprint_q = fragment_footprints(frags, mode, uv[mode]) * frequency
         return frags.image(checker(p, q, footprint_p, footprint_q), background)
 
-    error = np.hypot(*(uv["affine"] - uv["perspective"])) * frequency
+    error = np.hypot(*(uv[mode] - uv["perspective"])) * frequency
     return CheckerViews(
         correct=texture("perspective"),
-        affine=texture("affine"),
+        approximate=texture(mode),
         error=frags.image(error, 0.0),
+        mode=mode,
         fragments=frags,
         uv=uv,
     )

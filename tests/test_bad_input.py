@@ -129,6 +129,6 @@ def test_any_scene_gives_a_clean_image(clip, attributes, mode):
 def test_any_camera_gives_a_clean_checkerboard(height, pitch, yaw, distance, fovy, near):
     camera = interp.Camera(height, pitch, yaw, distance, fovy, near)
     views = checker_views(interp.ground_plane(camera, quads=4), 24, 16)
-    for image in (views.correct, views.affine, views.error):
+    for image in (views.correct, views.approximate, views.error):
         assert np.isfinite(image).all()
     assert views.correct.min() >= 0 and views.correct.max() <= 1

@@ -30,7 +30,7 @@ def test_straight_down_affine_equals_correct():
     scene = interp.ground_plane(interp.Camera(height=2, pitch=90, distance=0), quads=1)
     views = checker_views(scene, 64, 64, frequency=4)
     assert views.covered.all()
-    np.testing.assert_allclose(views.affine, views.correct, atol=1e-9)
+    np.testing.assert_allclose(views.approximate, views.correct, atol=1e-9)
     assert views.error.max() < 1e-9
 
 
@@ -41,7 +41,7 @@ def test_tilted_camera_bends_the_affine_checkerboard():
     seen = views.covered
     assert seen.sum() > 2000
     assert views.error[seen].max() > 1.0
-    assert np.mean(views.affine[seen] != views.correct[seen]) > 0.05
+    assert np.mean(views.approximate[seen] != views.correct[seen]) > 0.05
     # The correct image is what sampling the true (u, v) of each pixel gives.
     uv = views.uv_image("perspective")
     expected = interp.checkerboard(uv[..., 0], uv[..., 1], 8, covered=seen)

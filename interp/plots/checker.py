@@ -48,6 +48,8 @@ class CheckerPanels:
         quads: int = 1,
         filtered: bool = True,
         max_error: float = 2.0,
+        mode: str = "affine",
+        span: int = 16,
     ) -> None:
         self.axes = list(axes)
         self.params = {
@@ -57,10 +59,12 @@ class CheckerPanels:
             "height": height,
             "quads": quads,
             "filtered": filtered,
+            "mode": mode,
+            "span": span,
         }
         blank = np.zeros((height, width))
         grey = {"cmap": "gray", "vmin": 0, "vmax": 1}
-        self.affine = self.axes[0].imshow(blank, **grey)
+        self.approximate = self.axes[0].imshow(blank, **grey)
         self.correct = self.axes[1].imshow(blank, **grey)
         self.error = self.axes[2].imshow(blank, cmap="viridis", vmin=0, vmax=max_error)
         for ax, title in zip(
@@ -73,23 +77,33 @@ class CheckerPanels:
         self.update()
 
     def update(self, **params: object) -> None:
-        """Redraw for a new ``camera``, ``frequency``, ``width``, ``height``, ``quads`` or
-        ``filtered``."""
+        """Redraw for a new ``camera``, ``frequency``, ``width``, ``height``, ``quads``,
+        ``filtered``, ``mode`` (of the left panel) or ``span``."""
         self.params.update(params)
         p = self.params
         camera = p["camera"].fitted(int(p["width"]), int(p["height"]))
         scene = ground_plane(camera, size=LESSON_SIZE, quads=int(p["quads"]))
         self.views: CheckerViews = checker_views(
-            scene, int(p["width"]), int(p["height"]), float(p["frequency"]), bool(p["filtered"])
+            scene,
+            int(p["width"]),
+            int(p["height"]),
+            float(p["frequency"]),
+            bool(p["filtered"]),
+            mode=str(p["mode"]),
+            span=int(p["span"]),
         )
         extent = (-0.5, int(p["width"]) - 0.5, int(p["height"]) - 0.5, -0.5)
         for image, data in (
-            (self.affine, self.views.affine),
+            (self.approximate, self.views.approximate),
             (self.correct, self.views.correct),
             (self.error, self.views.error),
         ):
             image.set_data(data)
             image.set_extent(extent)
+        mode = str(p["mode"])
+        self.axes[0].set_title(
+            mode if mode != "subdivided" else f"exact every {p['span']} px", fontsize=9
+        )
         worst = float(self.views.error.max())
         self.axes[2].set_title(f"|Δ(u, v)| in texels (max {worst:.2f})", fontsize=9)
 
@@ -136,10 +150,10 @@ class UVImages:
         p = self.params
         camera = p["camera"].fitted(int(p["width"]), int(p["height"]))
         scene = ground_plane(camera, size=LESSON_SIZE, quads=int(p["quads"]))
-        views = checker_views(scene, int(p["width"]), int(p["height"]), filtered=False)
         mode = str(p["mode"])
-        uv = views.uv_image("perspective" if mode == "perspective" else "affine")
+        views = checker_views(scene, int(p["width"]), int(p["height"]), filtered=False, mode=mode)
+        uv = views.uv_image(mode)
         for k, (image, ax) in enumerate(zip(self.images, self.axes, strict=True)):
-            image.set_data(np.where(views.covered, uv[..., k], np.nan))
+            image.set_data(np.ma.masked_array(uv[..., k], mask=~views.covered))
             image.set_extent((-0.5, int(p["width"]) - 0.5, int(p["height"]) - 0.5, -0.5))
             ax.set_title(f"{'uv'[k]} ({mode})", fontsize=9)

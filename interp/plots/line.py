@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.axes import Axes
+from matplotlib.collections import LineCollection
 
 from interp import lerp
 from interp.plots._style import AFFINE, CORRECT, OTHERS, markevery
@@ -71,7 +72,8 @@ class LineView:
         (self.plane,) = ax.plot([], [], color="0.4", linewidth=2.5, solid_capstyle="butt")
         (self.segment,) = ax.plot([], [], color="black", linewidth=2)
         self.rays = [ax.plot([], [], color="0.6", linewidth=0.8)[0] for _ in range(2)]
-        (self.fan,) = ax.plot([], [], color=OTHERS[0]["color"], linewidth=0.6, alpha=0.8)
+        self.fan = LineCollection([], colors=OTHERS[0]["color"], linewidths=0.6, alpha=0.8)
+        ax.add_collection(self.fan)
         (self.hits,) = ax.plot(
             [], [], linestyle="none", marker="o", markersize=3, color=OTHERS[0]["color"]
         )
@@ -144,12 +146,10 @@ class LineView:
             s = (np.arange(n) + 0.5) / n
             t = lerp.t_from_s(s, w1, w2)
             hits = A + t[:, None] * (B - A)
-            fan_w = np.column_stack([np.zeros(n), -hits[:, 1], np.full(n, np.nan)]).ravel()
-            fan_x = np.column_stack([np.zeros(n), hits[:, 0], np.full(n, np.nan)]).ravel()
-            self.fan.set_data(fan_w, fan_x)
+            self.fan.set_segments([[(0.0, 0.0), _wx(hit)] for hit in hits])
             self.hits.set_data(-hits[:, 1], hits[:, 0])
         else:
-            self.fan.set_data([], [])
+            self.fan.set_segments([])
             self.hits.set_data([], [])
 
     def nearest_endpoint(self, w: float, x: float, radius: float) -> str | None:

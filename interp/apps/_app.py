@@ -1,0 +1,197 @@
+"""The machinery every live figure shares: one figure, its controls, updates in place.
+
+An app creates its figure once, under ``plt.ioff()`` and the package style, and never rebuilds
+it: a change of any control calls the app's ``draw(**values)``, which calls the plots'
+``update``, and then the canvas redraws.
+
+- With ipympl (``%matplotlib widget``) the canvas is itself a widget: the app shows the
+  controls beside it and redraws with ``draw_idle``.
+- Without it (the inline backend, a static HTML export), the app displays the figure as an image
+  once, with a display id, and replaces that image after each change: the same call still
+  shows a correct figure.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+
+import ipywidgets as widgets
+import matplotlib.pyplot as plt
+from IPython.display import display
+from matplotlib.figure import Figure
+
+from interp._allocator import keep_freed_memory
+from interp.plots import styled
+
+#: Presentation mode: larger fonts and controls for a projector (see :func:`presentation`).
+_PRESENTATION = {"on": False}
+
+
+def presentation(on: bool = True) -> None:
+    """Switch presentation mode for apps made afterwards: larger figures, fonts and controls.
+
+    Examples
+    --------
+    >>> presentation(True); presentation(False)
+    """
+    _PRESENTATION["on"] = bool(on)
+
+
+class App:
+    """A figure with its controls.
+
+    Subclasses build their plots on ``self.figure`` in ``__init__``, pass their controls to
+    ``super().__init__`` and implement ``draw(**values)``.
+    """
+
+    def __init__(
+        self,
+        controls: dict[str, widgets.ValueWidget],
+        figsize: tuple[float, float],
+        build: Callable[[Figure], None],
+    ) -> None:
+        keep_freed_memory()  # sliders feel live: numpy's temporaries are recycled
+        scale = 1.5 if _PRESENTATION["on"] else 1.0
+        context = {
+            "font.size": 9 * scale,
+            "axes.titlesize": 10 * scale,
+            "axes.labelsize": 9 * scale,
+            "legend.fontsize": 8 * scale,
+            "xtick.labelsize": 8 * scale,
+            "ytick.labelsize": 8 * scale,
+        }
+        with styled(), plt.rc_context(context), plt.ioff():
+            self.figure = plt.figure(figsize=(figsize[0] * scale, figsize[1] * scale))
+            build(self.figure)
+        self.controls = controls
+        for control in controls.values():
+            if scale > 1:
+                control.layout.width = "420px"
+                control.style.font_size = "18px"
+            control.observe(self._changed, names="value")
+        self._handle = None
+        self.refresh()
+
+    @property
+    def values(self) -> dict[str, object]:
+        """The controls' current values, by name."""
+        return {name: control.value for name, control in self.controls.items()}
+
+    def set(self, **values: object) -> None:
+        """Set several controls at once and redraw once (as a slider drag does per step)."""
+        for name in values:
+            if name not in self.controls:
+                raise TypeError(f"no control named {name!r}; controls: {list(self.controls)}")
+        with self._holding():
+            for name, value in values.items():
+                self.controls[name].value = value
+        self.refresh()
+
+    def draw(self, **values: object) -> None:  # pragma: no cover - every app overrides it
+        raise NotImplementedError
+
+    def refresh(self) -> None:
+        """Draw with the controls' values and show the result."""
+        self.draw(**self.values)
+        if self.live:
+            self.figure.canvas.draw_idle()
+        elif self._handle is not None:
+            self._handle.update(self.figure)
+
+    @property
+    def live(self) -> bool:
+        """Whether the figure is a live ipympl canvas."""
+        return isinstance(self.figure.canvas, widgets.DOMWidget)
+
+    @property
+    def widget(self) -> widgets.Widget:
+        """The controls, and with ipympl the live figure beside them."""
+        panel = widgets.VBox(list(self.controls.values()))
+        if self.live:
+            self.figure.canvas.header_visible = False
+            self.figure.canvas.toolbar_position = "left"
+            return widgets.AppLayout(
+                left_sidebar=panel, center=self.figure.canvas, pane_widths=[1, 3, 0]
+            )
+        return panel
+
+    def _ipython_display_(self) -> None:
+        if self.live:
+            display(self.widget)
+        else:
+            self._handle = display(self.figure, display_id=True)
+            display(self.widget)
+
+    _holding_depth = 0
+
+    def _holding(self):
+        app = self
+
+        class Hold:
+            def __enter__(self) -> None:
+                app._holding_depth += 1
+
+            def __exit__(self, *exc: object) -> None:
+                app._holding_depth -= 1
+
+        return Hold()
+
+    def _changed(self, change: dict) -> None:
+        if self._holding_depth == 0:
+            self.refresh()
+
+
+def slider(
+    value: float,
+    low: float,
+    high: float,
+    step: float,
+    description: str,
+    log: bool = False,
+    readout_format: str = ".2f",
+) -> widgets.ValueWidget:
+    """A float slider that updates while it is dragged.
+
+    With ``log``, ``low`` and ``high`` are the value's bounds and the slider moves in powers
+    of ten.
+    """
+    common = {
+        "description": description,
+        "continuous_update": True,
+        "readout_format": readout_format,
+        "style": {"description_width": "initial"},
+    }
+    if log:
+        import numpy as np
+
+        return widgets.FloatLogSlider(
+            value=value,
+            base=10,
+            min=float(np.log10(low)),
+            max=float(np.log10(high)),
+            step=step,
+            **common,
+        )
+    return widgets.FloatSlider(value=value, min=low, max=high, step=step, **common)
+
+
+def int_slider(value: int, low: int, high: int, description: str) -> widgets.IntSlider:
+    """An integer slider that updates while it is dragged."""
+    return widgets.IntSlider(
+        value=value,
+        min=low,
+        max=high,
+        description=description,
+        continuous_update=True,
+        style={"description_width": "initial"},
+    )
+
+
+def choice(value: str, options: Iterable[str], description: str) -> widgets.Dropdown:
+    """A drop-down list."""
+    return widgets.Dropdown(
+        value=value,
+        options=list(options),
+        description=description,
+        style={"description_width": "initial"},
+    )

@@ -1,0 +1,49 @@
+"""The lessons: stored without outputs, and each runs top to bottom in a fresh kernel with no
+error and no warning."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import nbformat
+import pytest
+from nbclient import NotebookClient
+
+LESSONS = sorted((Path(__file__).resolve().parent.parent / "lessons").glob("*.ipynb"))
+
+
+def test_there_are_seven_lessons():
+    assert [p.name[:3] for p in LESSONS] == [f"0{k}_" for k in range(1, 8)]
+
+
+@pytest.mark.parametrize("path", LESSONS, ids=lambda p: p.stem)
+def test_stored_without_outputs(path):
+    notebook = json.loads(path.read_text())
+    for cell in notebook["cells"]:
+        if cell["cell_type"] == "code":
+            assert cell["outputs"] == [] and cell["execution_count"] is None, path.name
+
+
+@pytest.mark.parametrize("path", LESSONS, ids=lambda p: p.stem)
+def test_runs_clean_in_a_fresh_kernel(path, tmp_path):
+    notebook = nbformat.read(path, as_version=4)
+    client = NotebookClient(notebook, timeout=120, kernel_name="python3",
+                            resources={"metadata": {"path": str(tmp_path)}})
+    client.execute()
+    problems = []
+    for index, cell in enumerate(notebook.cells):
+        for output in cell.get("outputs", []):
+            if output["output_type"] == "error" or (
+                output["output_type"] == "stream" and output["name"] == "stderr"
+            ):
+                problems.append((index, output.get("text") or output.get("evalue")))
+    assert not problems, problems
+    # Every exercise cell's checker says the reference answer is right.
+    verdicts = [
+        output["data"]["text/plain"]
+        for cell in notebook.cells
+        for output in cell.get("outputs", [])
+        if output["output_type"] == "execute_result" and "check." in cell.source
+    ]
+    assert verdicts and all(v.startswith("✓") for v in verdicts), verdicts
