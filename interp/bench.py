@@ -8,7 +8,9 @@ For a ground plane of 512 triangles (16 x 16 quads) it times, at 256², 512² an
 - their ratio (target: at most 5x at 512²).
 
 And one slider step of the checkerboard lesson at 512² (both modes, texture lookup, error map;
-target: at most 30 ms).
+target: at most 30 ms); and the lesson's live app at its default size: one slider step, compute
+plus redraw of the figure with Agg (target: at most 60 ms), and with the PNG encoding ipympl
+adds before sending the picture to the browser.
 
 Everything is timed twice: first with the C allocator as Python starts it, then after
 :func:`interp._allocator.keep_freed_memory`, which the live apps turn on (it stops numpy's large
@@ -32,6 +34,7 @@ from interp.scenes import checker_views
 SIZES = (256, 512, 1024)
 RATIO_TARGET = 5.0
 STEP_TARGET_MS = 30.0
+APP_TARGET_MS = 60.0
 
 
 def median_ms(run: Callable[[], object], repeat: int) -> float:
@@ -85,7 +88,39 @@ def table(gl: dict | None, repeat: int) -> list[str]:
             f"slider step 512², both modes, {texture} texture, error map: {step:.1f} ms "
             f"(target {STEP_TARGET_MS:.0f} ms: {verdict})"
         )
+    lines.extend(app_lines(repeat))
     return lines
+
+
+def app_lines(repeat: int) -> list[str]:
+    """One slider step of the checkerboard app: compute and redraw, as in a kernel."""
+    import io
+
+    import matplotlib
+
+    matplotlib.use("agg")
+    from interp import apps
+
+    app = apps.checkerboards()
+    canvas = app.figure.canvas
+    pitches = iter(np.tile([14.0, 16.0], 10_000))
+
+    def step() -> None:
+        app.set(pitch=next(pitches))
+        canvas.draw()
+
+    def step_and_encode() -> None:
+        step()
+        canvas.print_png(io.BytesIO())
+
+    size = app.values["resolution"]
+    compute = median_ms(step, repeat)
+    encoded = median_ms(step_and_encode, repeat)
+    verdict = "ok" if compute <= APP_TARGET_MS else "over"
+    return [
+        f"checkerboard app, {size} panels: slider step + Agg redraw {compute:.1f} ms "
+        f"(target {APP_TARGET_MS:.0f} ms: {verdict}); with PNG encoding {encoded:.1f} ms",
+    ]
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -28,8 +28,12 @@ def test_stored_without_outputs(path):
 @pytest.mark.parametrize("path", LESSONS, ids=lambda p: p.stem)
 def test_runs_clean_in_a_fresh_kernel(path, tmp_path):
     notebook = nbformat.read(path, as_version=4)
-    client = NotebookClient(notebook, timeout=120, kernel_name="python3",
-                            resources={"metadata": {"path": str(tmp_path)}})
+    client = NotebookClient(
+        notebook,
+        timeout=120,
+        kernel_name="python3",
+        resources={"metadata": {"path": str(tmp_path)}},
+    )
     client.execute()
     problems = []
     for index, cell in enumerate(notebook.cells):
@@ -47,3 +51,27 @@ def test_runs_clean_in_a_fresh_kernel(path, tmp_path):
         if output["output_type"] == "execute_result" and "check." in cell.source
     ]
     assert verdicts and all(v.startswith("✓") for v in verdicts), verdicts
+
+
+@pytest.mark.parametrize("name", ["01_the_problem", "06_checkerboards"])
+def test_without_ipympl_each_app_shows_one_static_figure(name, tmp_path):
+    """With the plain inline backend, an app cell shows its figure once, as a PNG, and the
+    controls after it."""
+    path = next(p for p in LESSONS if p.stem == name)
+    notebook = nbformat.read(path, as_version=4)
+    notebook.cells[1].source = notebook.cells[1].source.replace(
+        "%matplotlib widget", "%matplotlib inline"
+    )
+    NotebookClient(
+        notebook,
+        timeout=120,
+        kernel_name="python3",
+        resources={"metadata": {"path": str(tmp_path)}},
+    ).execute()
+    app_cells = [c for c in notebook.cells if c.cell_type == "code" and "apps." in c.source]
+    assert app_cells
+    for cell in app_cells:
+        kinds = [sorted(o.get("data", {})) for o in cell.outputs]
+        pngs = [k for k in kinds if "image/png" in k]
+        widgets_shown = [k for k in kinds if "application/vnd.jupyter.widget-view+json" in k]
+        assert len(pngs) == 1 and len(widgets_shown) == 1, kinds

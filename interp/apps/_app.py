@@ -64,6 +64,12 @@ class App:
             self.figure = plt.figure(figsize=(figsize[0] * scale, figsize[1] * scale))
             build(self.figure)
         self.controls = controls
+        self.draw(**self.values)
+        # Lay the figure out once, then freeze it: constrained layout would otherwise redo its
+        # work (about half of a redraw) on every slider step, for a figure whose shape never
+        # changes.
+        self.figure.get_layout_engine().execute(self.figure)
+        self.figure.set_layout_engine("none")
         for control in controls.values():
             if scale > 1:
                 control.layout.width = "420px"

@@ -147,4 +147,4 @@ class DepthPrecision:
         self.ax.set_xlim(near * 0.1, far)
         self.ax.set_ylim(every.min() / 2, every.max() * 2)
         self.ax.set_title(f"{self.params['buffer']} depth buffer, far = {far:g}", fontsize=9)
-        self.ax.legend(loc="upper left")
+        self.ax.legend(loc="upper left", fontsize="small")

@@ -1,0 +1,309 @@
+"""Every app, driven without a browser: move controls, compare what is shown with interp."""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from matplotlib.backend_bases import MouseEvent
+from matplotlib.collections import LineCollection
+
+import interp
+from interp import approximation, apps
+from interp.apps.scenes import RESOLUTIONS
+from interp.plots.gpu import LAB_CAMERA
+from interp.scenes import LESSON_CAMERA, LESSON_SIZE, checker_views
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    yield
+    plt.close("all")
+
+
+def shown_arrays(figure):
+    """Every number the figure displays: line data, images, line collections."""
+    for ax in figure.axes:
+        for line in ax.lines:
+            yield np.asarray(line.get_xydata(), float)
+        for image in ax.images:
+            data = image.get_array()
+            yield np.ma.compressed(data) if np.ma.isMaskedArray(data) else np.asarray(data)
+        for collection in ax.collections:
+            if isinstance(collection, LineCollection):
+                for segment in collection.get_segments():
+                    yield np.asarray(segment, float)
+
+
+def snapshot(figure):
+    return [a.copy() for a in shown_arrays(figure)]
+
+
+def camera_values(**changes):
+    values = {
+        k: getattr(LESSON_CAMERA, k) for k in ("height", "pitch", "yaw", "distance", "fovy", "near")
+    }
+    return {**values, **changes}
+
+
+def test_the_problem_shows_where_the_midpoints_go():
+    app = apps.the_problem()
+    app.set(A_x=-1.0, A_w=2.0, B_x=2.0, B_w=6.0, d=1.5)
+    view = app.view
+    np.testing.assert_allclose(view.segment.get_xydata(), [[2.0, -1.0], [6.0, 2.0]])
+    t = interp.t_from_s(0.5, 2.0, 6.0)
+    expected_C = np.array([-1.0, -2.0]) + t * (np.array([2.0, -6.0]) - [-1.0, -2.0])
+    np.testing.assert_allclose(view.markers["C"].get_xydata()[0], [-expected_C[1], expected_C[0]])
+    np.testing.assert_allclose(view.plane.get_xdata(), [1.5, 1.5])
+    s_m = interp.s_from_t(0.5, 2.0, 6.0)
+    assert f"s = {s_m:.3f}" in view.ax.get_title()
+
+
+def test_projecting_a_line_links_all_three_panels():
+    app = apps.projecting_a_line()
+    before = snapshot(app.figure)
+    app.set(A_w=1.0, B_w=9.0, samples=5)
+    after = snapshot(app.figure)
+    assert any(
+        b.shape != a.shape or not np.allclose(b, a) for b, a in zip(before, after, strict=True)
+    )
+    s = np.linspace(0, 1, 101)
+    np.testing.assert_allclose(
+        app.strip.correct.get_ydata(), interp.lerp_perspective(0.0, 1.0, 1.0, 9.0, s)
+    )
+    samples = (np.arange(5) + 0.5) / 5
+    np.testing.assert_allclose(app.curve.samples.get_ydata(), interp.t_from_s(samples, 1.0, 9.0))
+    assert len(app.view.fan.get_segments()) == 5
+
+
+def test_dragging_an_endpoint_moves_every_linked_panel():
+    app = apps.projecting_a_line()
+    app.figure.canvas.draw()
+    ax = app.view.ax
+    start = app.view.points["A"]
+    before = app.strip.correct.get_ydata().copy()
+
+    def mouse(name, w, x):
+        px, py = ax.transData.transform((w, x))
+        event = MouseEvent(name, app.figure.canvas, px, py, button=1)
+        app.figure.canvas.callbacks.process(name, event)
+
+    mouse("button_press_event", -start[1], start[0])
+    mouse("motion_notify_event", 6.0, 1.0)
+    mouse("button_release_event", 6.0, 1.0)
+    assert app.controls["A_w"].value == pytest.approx(6.0, abs=0.05)
+    assert app.controls["A_x"].value == pytest.approx(1.0, abs=0.05)
+    np.testing.assert_allclose(
+        app.view.points["A"], [app.controls["A_x"].value, -app.controls["A_w"].value]
+    )
+    assert not np.allclose(app.strip.correct.get_ydata(), before)
+    np.testing.assert_allclose(
+        app.strip.correct.get_ydata(),
+        interp.lerp_perspective(
+            0.0, 1.0, app.controls["A_w"].value, app.controls["B_w"].value, np.linspace(0, 1, 101)
+        ),
+    )
+    mouse("motion_notify_event", 2.0, 0.0)  # released: no longer dragging
+    assert app.controls["A_w"].value == pytest.approx(6.0, abs=0.05)
+
+
+def test_st_mapping_marks_the_derived_peak():
+    app = apps.st_mapping()
+    app.set(w1=1.0, w2=9.0)
+    assert app.gap.peak.get_xydata()[0] == pytest.approx([0.75, 0.5])
+    np.testing.assert_allclose(
+        app.family.current.get_ydata(), interp.t_from_s(np.linspace(0, 1, 201), 1.0, 9.0)
+    )
+
+
+def test_depth_app_curves():
+    app = apps.depth()
+    app.set(w1=2.0, w2=20.0, near=0.5, far=50.0, buffer="fixed24")
+    ndc = app.across.curves["NDC z"].get_ydata()
+    np.testing.assert_allclose(ndc, np.linspace(0, 1, 101), atol=1e-12)  # straight
+    w, step = app.precision.lines[0].get_data()
+    np.testing.assert_allclose(step, interp.depth_resolution(w, 0.5, 50.0, "fixed24"))
+
+
+def test_attributes_app_curves():
+    app = apps.attributes()
+    app.set(a1=0.2, a2=-0.4, w1=2.0, w2=8.0, behind=-3.0, near=0.25)
+    s = np.linspace(0, 1, 101)
+    np.testing.assert_allclose(
+        app.line.lines["perspective-correct"].get_ydata(),
+        interp.lerp_perspective(0.2, -0.4, 2.0, 8.0, s),
+    )
+    a_c = interp.mistakes.clip_vertex_attribute(0.2, -0.4, 2.0, -3.0, 0.25)
+    np.testing.assert_allclose(
+        app.clip.right.get_ydata(), interp.lerp_perspective(0.2, a_c, 2.0, 0.25, s)
+    )
+
+
+@pytest.mark.parametrize("make, whole", [(apps.colour_quad, True), (apps.barycentrics, False)])
+def test_colour_images_are_rasterize_output(make, whole):
+    app = make()
+    app.set(**camera_values(pitch=40.0, height=1.5))
+    image = app.images[1]
+    camera = interp.Camera(**camera_values(pitch=40.0, height=1.5)).fitted(
+        image.width, image.height
+    )
+    scene = interp.ground_plane(camera, LESSON_SIZE, quads=1)
+    triangles = scene.triangles if whole else scene.triangles[:1]
+    colours, covered = interp.rasterize(
+        scene.clip, interp.plots.attributes.CORNER_COLOURS, triangles, image.width, image.height
+    )
+    np.testing.assert_allclose(image.image.get_array()[covered], colours[covered])
+
+
+def test_checkerboards_show_checker_views():
+    app = apps.checkerboards()
+    app.set(
+        **camera_values(pitch=30.0, yaw=20.0),
+        frequency=12.0,
+        resolution="160 x 120",
+        quads=2,
+        mode="subdivided",
+        span=8,
+        filtered="nearest",
+    )
+    camera = interp.Camera(**camera_values(pitch=30.0, yaw=20.0)).fitted(160, 120)
+    views = checker_views(
+        interp.ground_plane(camera, LESSON_SIZE, quads=2),
+        160,
+        120,
+        12.0,
+        filtered=False,
+        mode="subdivided",
+        span=8,
+    )
+    panels = app.panels
+    np.testing.assert_array_equal(panels.approximate.get_array(), views.approximate)
+    np.testing.assert_array_equal(panels.correct.get_array(), views.correct)
+    np.testing.assert_array_equal(panels.error.get_array(), views.error)
+    assert panels.axes[0].get_title() == "exact every 8 px"
+
+
+def test_uv_images_are_masked_where_nothing_is_drawn():
+    app = apps.uv_images()
+    app.set(**camera_values(yaw=45.0), mode="affine")
+    u = app.uv.images[0].get_array()
+    assert np.ma.isMaskedArray(u) and u.mask.any() and (~u.mask).any()
+    assert 0 <= u.min() and u.max() <= 1
+
+
+def test_clipping_counts_the_pieces():
+    app = apps.clipping()
+    app.set(**camera_values(height=0.02, pitch=10.0, near=0.01, distance=0.0))
+    assert app.view.counts["pieces"] > app.view.counts["visible triangles"]
+    assert str(app.view.counts["pieces"]) in app.view.ax.get_title()
+
+
+def test_approximation_lab_plots_the_costs():
+    app = apps.approximations()
+    values = {**camera_values(), "roll": 30.0}
+    app.set(**values)
+    camera = interp.Camera(**{**LAB_CAMERA.__dict__, **values})
+    spans = approximation.span_costs(camera, 192, 144)
+    x, y = app.lab.spans.get_data()
+    np.testing.assert_allclose(x, spans.divides_per_pixel[1:])
+    np.testing.assert_allclose(y, spans.mean_error[1:])
+
+
+def test_presentation_mode_makes_bigger_apps():
+    apps.presentation(True)
+    try:
+        big = apps.st_mapping()
+    finally:
+        apps.presentation(False)
+    small = apps.st_mapping()
+    assert big.figure.get_size_inches()[0] > small.figure.get_size_inches()[0]
+    assert big.controls["w1"].layout.width == "420px"
+
+
+def test_unknown_control_is_named():
+    with pytest.raises(TypeError, match="no control named 'pitchh'"):
+        apps.checkerboards().set(pitchh=3)
+
+
+def test_static_display_shows_the_figure_once_and_updates_it(monkeypatch):
+    shown = []
+
+    class Handle:
+        def update(self, obj):
+            shown.append(("update", obj))
+
+    def fake_display(obj, display_id=False):
+        shown.append(("display", obj))
+        return Handle() if display_id else None
+
+    monkeypatch.setattr("interp.apps._app.display", fake_display)
+    app = apps.st_mapping()
+    app._ipython_display_()
+    assert [kind for kind, _ in shown] == ["display", "display"]
+    assert shown[0][1] is app.figure and isinstance(shown[1][1], widgets.Widget)
+    app.controls["w2"].value = 7.0
+    assert shown[-1] == ("update", app.figure)
+
+
+def control_values(control):
+    if isinstance(control, widgets.Dropdown):
+        return st.sampled_from([o[1] if isinstance(o, tuple) else o for o in control.options])
+    if isinstance(control, widgets.IntSlider):
+        return st.integers(control.min, control.max)
+    if isinstance(control, widgets.FloatLogSlider):
+        return st.floats(control.min, control.max).map(lambda e: 10.0**e)
+    return st.floats(control.min, control.max)
+
+
+@pytest.mark.parametrize("name", sorted(apps.ALL))
+def test_any_slider_values_show_clean_figures(name):
+    app = apps.ALL[name]()
+    if name == "checkerboards":
+        app.set(resolution="160 x 120")  # keep the fuzz quick; resolutions are tested above
+    strategy = st.fixed_dictionaries(
+        {
+            key: control_values(c)
+            for key, c in app.controls.items()
+            if not (name == "checkerboards" and key == "resolution")
+        }
+    )
+    extremes = [
+        {
+            k: (c.min if hasattr(c, "min") else c.value)
+            for k, c in app.controls.items()
+            if k != "resolution"
+        },
+        {
+            k: (c.max if hasattr(c, "max") else c.value)
+            for k, c in app.controls.items()
+            if k != "resolution"
+        },
+    ]
+
+    def check(values):
+        app.set(**values)
+        for array in shown_arrays(app.figure):
+            assert np.all(np.isfinite(array)), name
+
+    for values in extremes:  # every slider at its minimum, then at its maximum
+        check(
+            {
+                k: (10.0**v if isinstance(app.controls[k], widgets.FloatLogSlider) else v)
+                for k, v in values.items()
+            }
+        )
+
+    @settings(max_examples=12 if name == "approximations" else 30, deadline=None)
+    @given(strategy)
+    def fuzz(values):
+        check(values)
+
+    fuzz()
+
+
+def test_resolutions_offered_are_valid():
+    for width, height in RESOLUTIONS.values():
+        assert 0 < width <= 4096 and 0 < height <= 4096
