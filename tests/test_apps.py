@@ -307,3 +307,24 @@ def test_any_slider_values_show_clean_figures(name):
 def test_resolutions_offered_are_valid():
     for width, height in RESOLUTIONS.values():
         assert 0 < width <= 4096 and 0 < height <= 4096
+
+
+@pytest.mark.parametrize("name", ["checkerboards", "clipping", "colour_quad", "uv_images"])
+@pytest.mark.parametrize(
+    "camera",
+    [
+        {"height": 0.0, "pitch": 0.0},  # the camera in the plane, looking along it
+        {"height": 0.001, "pitch": -10.0, "near": 0.001},  # grazing, near at its minimum
+        {"height": -0.5, "pitch": 30.0},  # below the plane, looking at its underside
+        {"height": 4.0, "pitch": 90.0, "distance": 0.0},  # straight down
+        {"height": 0.5, "distance": 0.0, "pitch": 5.0, "near": 0.001},  # above the centre
+    ],
+    ids=["in-plane", "grazing", "below", "straight-down", "inside"],
+)
+def test_extreme_cameras_show_clean_figures(name, camera):
+    app = apps.ALL[name]()
+    if "resolution" in app.controls:
+        app.set(resolution="160 x 120")
+    app.set(**camera)
+    for array in shown_arrays(app.figure):
+        assert np.all(np.isfinite(array))
