@@ -1,7 +1,8 @@
 # Two commands for a fresh clone (see README.md):
 #   make lessons   install everything into .venv and open the lessons in JupyterLab
 #   make test      install everything into .venv and run the whole test suite
-# Also: make bench (speed figures beside real OpenGL), make clean.
+# Also: make bench (speed figures beside real OpenGL), make handouts (print-ready figures),
+# make clean.
 
 PYTHON ?= python3
 VENV   ?= .venv
@@ -11,7 +12,7 @@ STAMP  := $(VENV)/.installed-dev
 # JupyterLab refuses to start as root unless told; containers often run as root.
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: lessons test bench lint clean
+.PHONY: lessons test bench handouts lint clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -33,6 +34,9 @@ test: lint
 
 bench: $(STAMP)
 	$(BIN)/python -m interp.bench
+
+handouts: $(STAMP)
+	$(BIN)/interp-figures --out handouts
 
 clean:
 	rm -rf $(VENV) .pytest_cache .ruff_cache .hypothesis

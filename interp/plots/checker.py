@@ -73,7 +73,8 @@ class CheckerPanels:
             ax.set_title(title, fontsize=9)
             ax.set_xticks([])
             ax.set_yticks([])
-        self.colorbar = self.axes[2].figure.colorbar(self.error, ax=self.axes[2], shrink=0.8)
+        figure = self.axes[2].get_figure(root=False)  # the subfigure, if drawn in one
+        self.colorbar = figure.colorbar(self.error, ax=self.axes[2], shrink=0.8)
         self.update()
 
     def update(self, **params: object) -> None:
