@@ -108,6 +108,11 @@ def test_dragging_an_endpoint_moves_every_linked_panel():
     )
     mouse("motion_notify_event", 2.0, 0.0)  # released: no longer dragging
     assert app.controls["A_w"].value == pytest.approx(6.0, abs=0.05)
+    # The release point counts even if the moves before it were lost on the way.
+    mouse("button_press_event", 6.0, 1.0)
+    mouse("button_release_event", 4.0, -2.0)
+    assert app.controls["A_w"].value == pytest.approx(4.0, abs=0.05)
+    assert app.controls["A_x"].value == pytest.approx(-2.0, abs=0.05)
 
 
 def test_st_mapping_marks_the_derived_peak():

@@ -13,6 +13,7 @@ it: a change of any control calls the app's ``draw(**values)``, which calls the 
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Iterable
 
 import ipywidgets as widgets
@@ -23,8 +24,9 @@ from matplotlib.figure import Figure
 from interp._allocator import keep_freed_memory
 from interp.plots import styled
 
-#: Presentation mode: larger fonts and controls for a projector (see :func:`presentation`).
-_PRESENTATION = {"on": False}
+#: Presentation mode: larger fonts and controls for a projector (see :func:`presentation`);
+#: also on when the environment variable INTERP_PRESENTATION is 1 (``make present`` sets it).
+_PRESENTATION = {"on": os.environ.get("INTERP_PRESENTATION") == "1"}
 
 
 def presentation(on: bool = True) -> None:
@@ -35,6 +37,10 @@ def presentation(on: bool = True) -> None:
     >>> presentation(True); presentation(False)
     """
     _PRESENTATION["on"] = bool(on)
+
+
+#: Widest figure an app makes, in inches at 100 dpi: it must fit a notebook's output area.
+MAX_WIDTH = 9.5
 
 
 class App:
@@ -51,6 +57,8 @@ class App:
         build: Callable[[Figure], None],
     ) -> None:
         keep_freed_memory()  # sliders feel live: numpy's temporaries are recycled
+        if figsize[0] > MAX_WIDTH:
+            raise ValueError(f"figsize width must be at most {MAX_WIDTH} in, got {figsize[0]}")
         scale = 1.5 if _PRESENTATION["on"] else 1.0
         context = {
             "font.size": 9 * scale,
@@ -111,14 +119,16 @@ class App:
 
     @property
     def widget(self) -> widgets.Widget:
-        """The controls, and with ipympl the live figure beside them."""
-        panel = widgets.VBox(list(self.controls.values()))
+        """The controls in rows that wrap, and with ipympl the live figure below them, where it
+        has the whole width of the page."""
+        panel = widgets.Box(
+            list(self.controls.values()),
+            layout=widgets.Layout(flex_flow="row wrap", align_items="center"),
+        )
         if self.live:
             self.figure.canvas.header_visible = False
             self.figure.canvas.toolbar_position = "left"
-            return widgets.AppLayout(
-                left_sidebar=panel, center=self.figure.canvas, pane_widths=[1, 3, 0]
-            )
+            return widgets.VBox([panel, self.figure.canvas])
         return panel
 
     def _ipython_display_(self) -> None:

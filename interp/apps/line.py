@@ -51,6 +51,7 @@ class _DragsEndpoints(App):
         )
 
     def _release(self, event: MouseEvent) -> None:
+        self._move(event)  # the browser may drop the last moves: end where the mouse let go
         self._dragging = None
 
     @staticmethod
@@ -91,7 +92,7 @@ class ProjectingALine(_DragsEndpoints):
             self.strip = plots.ImageStrip(axes[1])
             self.curve = plots.STCurve(axes[2], samples=8)
 
-        super().__init__(controls, (12.5, 4.2), build)
+        super().__init__(controls, (9.5, 3.4), build)
         self._connect_drag()
 
     def draw(self, **v: float) -> None:
@@ -118,7 +119,7 @@ class STMapping(App):
             self.family = plots.STFamily(axes[0])
             self.gap = plots.GapPlot(axes[1])
 
-        super().__init__(controls, (10, 4.4), build)
+        super().__init__(controls, (9.0, 4.2), build)
 
     def draw(self, **v: float) -> None:
         self.family.update(ratio=v["w2"] / v["w1"])

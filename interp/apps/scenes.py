@@ -35,7 +35,7 @@ class Depth(App):
             self.across = plots.DepthAcross(axes[0])
             self.precision = plots.DepthPrecision(axes[1])
 
-        super().__init__(controls, (10, 4.2), build)
+        super().__init__(controls, (9.5, 4.0), build)
 
     def draw(self, **v: object) -> None:
         self.across.update(w1=v["w1"], w2=v["w2"], near=v["near"], far=v["far"])
@@ -60,7 +60,7 @@ class Attributes(App):
             self.line = plots.MistakesAlongALine(axes[0])
             self.clip = plots.ClipVertexMistake(axes[1])
 
-        super().__init__(controls, (10, 4.2), build)
+        super().__init__(controls, (9.5, 4.0), build)
 
     def draw(self, **v: float) -> None:
         self.line.update(a1=v["a1"], a2=v["a2"], w1=v["w1"], w2=v["w2"], near=v["near"])
@@ -105,7 +105,7 @@ class Checkerboards(App):
         def build(figure: Figure) -> None:
             self.panels = plots.CheckerPanels(figure.subplots(1, 3))
 
-        super().__init__(controls, (12, 3.6), build)
+        super().__init__(controls, (9.5, 2.9), build)
 
     def draw(self, **v: object) -> None:
         width, height = RESOLUTIONS[str(v["resolution"])]

@@ -1,0 +1,209 @@
+"""The lessons in a real browser: JupyterLab and Voilà, driven through Debian's Chromium.
+
+A failing test saves a screenshot in test-artifacts/. With INTERP_SCREENSHOTS=1 the tests also
+refresh the README's screenshots in docs/screenshots/.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+import time
+
+import numpy as np
+import pytest
+from browser import ARTIFACTS, CHROMIUM, SCREENSHOTS, chromium, server
+from PIL import Image
+
+pytestmark = pytest.mark.browser
+
+playwright_api = pytest.importorskip("playwright.sync_api")
+
+#: The notebook on show (JupyterLab hides the others), or Voilà's page.
+VISIBLE = ":is(.jp-NotebookPanel:not(.lm-mod-hidden), body.jp-Notebook, #rendered_cells, body)"
+
+
+@pytest.fixture(scope="module")
+def browser():
+    if not os.path.exists(CHROMIUM):
+        if os.environ.get("CI"):
+            pytest.fail(f"CI must have Chromium at {CHROMIUM} (apt-get install chromium)")
+        pytest.skip(f"no Chromium at {CHROMIUM}")
+    with playwright_api.sync_playwright() as playwright:
+        browser = chromium(playwright)
+        yield browser
+        browser.close()
+
+
+@pytest.fixture
+def page(browser, request):
+    page = browser.new_page(viewport={"width": 1500, "height": 1100})
+    page.console_errors = []
+    page.on("console", lambda m: m.type == "error" and page.console_errors.append(m.text))
+    page.on("pageerror", lambda e: page.console_errors.append(str(e)))
+    yield page
+    report = getattr(request.node, "report_call", None)
+    if report is not None and report.failed:
+        ARTIFACTS.mkdir(exist_ok=True)
+        path = ARTIFACTS / f"{request.node.name}.png"
+        page.screenshot(path=str(path), full_page=True)
+        print(f"screenshot of the failing page: {path}")
+    page.close()
+
+
+@pytest.fixture(scope="module")
+def lab(tmp_path_factory):
+    with server("lab", tmp_path_factory.mktemp("lab")) as url:
+        yield url
+
+
+def pixels(element) -> np.ndarray:
+    return np.asarray(Image.open(io.BytesIO(element.screenshot())).convert("RGB"), dtype=int)
+
+
+def wait_until_changed(element, before: np.ndarray, region=np.s_[:, :], seconds=20.0):
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        now = pixels(element)
+        if now.shape != before.shape or np.abs(now[region] - before[region]).sum() > 0:
+            return now
+        time.sleep(0.2)
+    raise AssertionError("the figure's pixels did not change")
+
+
+def wait_until_drawn(element, seconds=30.0) -> np.ndarray:
+    """Wait for the canvas to show a picture (not a blank rectangle) that has settled."""
+    deadline = time.monotonic() + seconds
+    last = None
+    while time.monotonic() < deadline:
+        now = pixels(element)
+        if now.std() > 10 and last is not None and np.array_equal(now, last):
+            return now
+        last = now
+        time.sleep(0.3)
+    raise AssertionError("the figure was never drawn")
+
+
+#: The notebook on show has a kernel that is connected and idle: safe to run cells.
+KERNEL_READY = """() => {
+    const panel = window.jupyterapp && window.jupyterapp.shell.currentWidget;
+    const kernel = panel && panel.sessionContext && panel.sessionContext.session
+        && panel.sessionContext.session.kernel;
+    return !!kernel && kernel.connectionStatus === 'connected' && kernel.status === 'idle';
+}"""
+
+
+def open_and_run(page, base: str, notebook: str):
+    page.goto(f"{base}/lab/tree/{notebook}?reset")  # a fresh workspace: only this notebook
+    page.wait_for_selector(".jp-Notebook", timeout=60_000)
+    page.wait_for_function(KERNEL_READY, timeout=90_000)
+    page.evaluate("window.jupyterapp.commands.execute('notebook:run-all-cells')")
+    canvas = page.locator(f"{VISIBLE} .jupyter-matplotlib-canvas-div canvas").first
+    canvas.wait_for(state="visible", timeout=90_000)
+    return canvas
+
+
+def slider(page, description: str):
+    label = page.locator(".widget-label", has_text=description)
+    return page.locator(f"{VISIBLE} .widget-slider", has=label).first
+
+
+def drag_handle(page, control, dx: float) -> None:
+    handle = control.locator(".noUi-handle")
+    box = handle.bounding_box()
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for step in range(1, 6):  # dragging: several moves, as a hand would
+        page.mouse.move(x + dx * step / 5, y)
+    page.mouse.up()
+
+
+def assert_no_errors(page) -> None:
+    errors = page.locator('.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"]')
+    assert errors.count() == 0, errors.all_inner_texts()
+    assert page.locator(".jp-RenderedText[data-mime-type*='error']").count() == 0
+    assert not page.console_errors, page.console_errors
+
+
+def save_screenshot(page, name: str) -> None:
+    if os.environ.get("INTERP_SCREENSHOTS") == "1":
+        SCREENSHOTS.mkdir(parents=True, exist_ok=True)
+        page.screenshot(path=str(SCREENSHOTS / f"{name}.png"))
+
+
+def test_checkerboard_lesson_moves_with_its_camera_slider(lab, page):
+    canvas = open_and_run(page, lab, "06_checkerboards.ipynb")
+    before = wait_until_drawn(canvas)
+    pitch = slider(page, "pitch (deg)")
+    pitch.scroll_into_view_if_needed()
+    value_before = pitch.locator(".widget-readout").inner_text()
+    drag_handle(page, pitch, 60)
+    after = wait_until_changed(canvas, before)
+    assert pitch.locator(".widget-readout").inner_text() != value_before
+    assert np.mean(np.any(after != before, axis=2)) > 0.05, "too little of the figure changed"
+    canvas.scroll_into_view_if_needed()
+    save_screenshot(page, "checkerboards")
+    assert_no_errors(page)
+
+
+def test_dragging_an_endpoint_moves_the_linked_panels(lab, page):
+    from interp import apps
+
+    canvas = open_and_run(page, lab, "02_projecting_a_line.ipynb")
+    canvas.scroll_into_view_if_needed()
+    before = wait_until_drawn(canvas)
+    # Where A is drawn: the same app, laid out the same way, tells us (figure pixels, y up).
+    app = apps.projecting_a_line()
+    a_w, a_x = -app.view.points["A"][1], app.view.points["A"][0]
+    px, py = app.view.ax.transData.transform((a_w, a_x))
+    height = app.figure.bbox.height
+    target_w, target_x = 5.0, 3.0
+    tx, ty = app.view.ax.transData.transform((target_w, target_x))
+    box = canvas.bounding_box()
+    readout = slider(page, "A: depth w").locator(".widget-readout")
+    start = readout.inner_text()
+    page.mouse.move(box["x"] + px, box["y"] + height - py)
+    page.mouse.down()
+    for step in range(1, 9):
+        f = step / 8
+        page.mouse.move(box["x"] + px + f * (tx - px), box["y"] + height - (py + f * (ty - py)))
+    page.wait_for_timeout(300)  # a hand rests before letting go
+    page.mouse.up()
+    # The kernel handles the motion events in order: wait for the last one to arrive.
+    page.wait_for_function(
+        "([el, target]) => Math.abs(parseFloat(el.innerText) - target) < 0.3",
+        arg=[readout.element_handle(), target_w],
+        timeout=20_000,
+    )
+    assert readout.inner_text() != start
+    # The linked panels are the right two thirds (the toolbar fades in over the left one).
+    third = before.shape[1] // 3
+    after = wait_until_changed(canvas, before, region=np.s_[:, third:])
+    for panel in (np.s_[:, third : 2 * third], np.s_[:, 2 * third :]):
+        assert np.abs(after[panel] - before[panel]).sum() > 0, "a linked panel did not move"
+    save_screenshot(page, "projecting_a_line")
+    assert_no_errors(page)
+
+
+def test_voila_shows_figures_and_sliders_without_code(tmp_path, page):
+    # Voilà's lab template links Font Awesome from a CDN, and this machine has no internet:
+    # answer those two requests with an empty stylesheet, so that the console must stay free
+    # of every other error.
+    page.route(
+        "https://cdn.jsdelivr.net/npm/@fortawesome/**",
+        lambda route: route.fulfill(status=200, content_type="text/css", body=""),
+    )
+    with server("voila", tmp_path, "06_checkerboards.ipynb") as url:
+        page.goto(url)
+        canvas = page.locator(".jupyter-matplotlib-canvas-div canvas").first
+        canvas.wait_for(state="visible", timeout=120_000)
+        before = wait_until_drawn(canvas)
+        text = page.locator("body").inner_text()
+        assert "Checkerboards" in text and "Try this" in text  # the prose is there
+        for code in ("apps.checkerboards()", "%matplotlib widget", "import interp", "def checker"):
+            assert code not in text, f"Voilà shows code: {code}"
+        drag_handle(page, slider(page, "height"), 80)
+        wait_until_changed(canvas, before)
+        save_screenshot(page, "voila")
+        assert not page.console_errors, page.console_errors
