@@ -1,8 +1,8 @@
 # Two commands for a fresh clone (see README.md):
 #   make lessons   install everything into .venv and open the lessons in JupyterLab
 #   make test      install everything into .venv and run the whole test suite
-# Also: make bench (speed figures beside real OpenGL), make handouts (print-ready figures),
-# make clean.
+# Also: make present (the lessons without code, large, for a projector), make bench (speed
+# figures beside real OpenGL), make handouts (print-ready figures), make clean.
 
 PYTHON ?= python3
 VENV   ?= .venv
@@ -12,7 +12,7 @@ STAMP  := $(VENV)/.installed-dev
 # JupyterLab refuses to start as root unless told; containers often run as root.
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: lessons test bench handouts lint clean
+.PHONY: lessons present test bench handouts lint clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -24,6 +24,9 @@ $(STAMP): pyproject.toml | $(BIN)/python
 
 lessons: $(STAMP)
 	$(BIN)/jupyter lab --notebook-dir=lessons $(LAB_ARGS)
+
+present: $(STAMP)
+	INTERP_PRESENTATION=1 $(BIN)/voila lessons
 
 lint: $(STAMP)
 	$(BIN)/ruff check --no-cache interp tests conftest.py
