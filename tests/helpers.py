@@ -2,9 +2,29 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
+import nbformat
 import numpy as np
+from nbclient import NotebookClient
 
 import interp
+
+LESSONS = Path(__file__).resolve().parent.parent / "lessons"
+
+
+def run_lesson(path: Path, workdir: Path, backend: str = "widget") -> nbformat.NotebookNode:
+    """Execute a lesson top to bottom in a fresh kernel, with ``%matplotlib <backend>``."""
+    notebook = nbformat.read(path, as_version=4)
+    if backend != "widget":
+        setup = notebook.cells[1]
+        assert "%matplotlib widget" in setup.source
+        setup.source = setup.source.replace("%matplotlib widget", f"%matplotlib {backend}")
+    client = NotebookClient(
+        notebook, timeout=120, kernel_name="python3", resources={"metadata": {"path": str(workdir)}}
+    )
+    client.execute()
+    return notebook
 
 
 def random_scene(rng: np.random.Generator, n_triangles: int, behind: bool = False):

@@ -11,12 +11,12 @@ import subprocess
 import sys
 from pathlib import Path
 
-import nbformat
 import numpy as np
 import pytest
-from nbclient import NotebookClient
 from nbconvert import HTMLExporter
 from PIL import Image
+
+from helpers import run_lesson
 
 tomllib = pytest.importorskip("tomllib")  # Python 3.11+
 
@@ -28,16 +28,7 @@ README = (ROOT / "README.md").read_text()
 def test_static_html_export_has_every_figure(tmp_path):
     """Without live widgets (plain inline backend), a lesson exported to HTML shows each app's
     figure as a picture."""
-    notebook = nbformat.read(ROOT / "lessons" / "03_the_st_mapping.ipynb", as_version=4)
-    notebook.cells[1].source = notebook.cells[1].source.replace(
-        "%matplotlib widget", "%matplotlib inline"
-    )
-    NotebookClient(
-        notebook,
-        timeout=120,
-        kernel_name="python3",
-        resources={"metadata": {"path": str(tmp_path)}},
-    ).execute()
+    notebook = run_lesson(ROOT / "lessons" / "03_the_st_mapping.ipynb", tmp_path, "inline")
     html, _ = HTMLExporter().from_notebook_node(notebook)
     images = re.findall(r'<img[^>]*src="data:image/png;base64,([^"]+)"', html)
     app_cells = [c for c in notebook.cells if c.cell_type == "code" and "apps." in c.source]

@@ -6,9 +6,9 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-import nbformat
 import pytest
-from nbclient import NotebookClient
+
+from helpers import run_lesson
 
 LESSONS = sorted((Path(__file__).resolve().parent.parent / "lessons").glob("*.ipynb"))
 
@@ -27,14 +27,7 @@ def test_stored_without_outputs(path):
 
 @pytest.mark.parametrize("path", LESSONS, ids=lambda p: p.stem)
 def test_runs_clean_in_a_fresh_kernel(path, tmp_path):
-    notebook = nbformat.read(path, as_version=4)
-    client = NotebookClient(
-        notebook,
-        timeout=120,
-        kernel_name="python3",
-        resources={"metadata": {"path": str(tmp_path)}},
-    )
-    client.execute()
+    notebook = run_lesson(path, tmp_path)
     problems = []
     for index, cell in enumerate(notebook.cells):
         for output in cell.get("outputs", []):
@@ -57,17 +50,7 @@ def test_runs_clean_in_a_fresh_kernel(path, tmp_path):
 def test_without_ipympl_each_app_shows_one_static_figure(name, tmp_path):
     """With the plain inline backend, an app cell shows its figure once, as a PNG, and the
     controls after it."""
-    path = next(p for p in LESSONS if p.stem == name)
-    notebook = nbformat.read(path, as_version=4)
-    notebook.cells[1].source = notebook.cells[1].source.replace(
-        "%matplotlib widget", "%matplotlib inline"
-    )
-    NotebookClient(
-        notebook,
-        timeout=120,
-        kernel_name="python3",
-        resources={"metadata": {"path": str(tmp_path)}},
-    ).execute()
+    notebook = run_lesson(next(p for p in LESSONS if p.stem == name), tmp_path, "inline")
     app_cells = [c for c in notebook.cells if c.cell_type == "code" and "apps." in c.source]
     assert app_cells
     for cell in app_cells:
