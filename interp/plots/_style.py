@@ -6,6 +6,8 @@ from contextlib import AbstractContextManager
 from pathlib import Path
 
 import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.axes import Axes
 
 #: The package's style sheet.
 STYLE = Path(__file__).resolve().parent.parent / "styles" / "interp.mplstyle"
@@ -33,3 +35,17 @@ def styled() -> AbstractContextManager:
 def markevery(n: int) -> int:
     """Marker spacing for a curve of n points."""
     return max(1, n // MARKERS)
+
+
+def fit_y(ax: Axes, *values: object) -> None:
+    """Set the y range to span ``values`` (numbers or arrays), with a 5% margin."""
+    every = np.concatenate([np.ravel(v) for v in values])
+    low, high = float(every.min()), float(every.max())
+    pad = 0.05 * max(high - low, 1e-9)
+    ax.set_ylim(low - pad, high + pad)
+
+
+def bare(ax: Axes) -> None:
+    """An axes that shows an image: no ticks."""
+    ax.set_xticks([])
+    ax.set_yticks([])

@@ -7,7 +7,7 @@ from matplotlib.axes import Axes
 
 from interp import lerp, mistakes
 from interp.camera import Camera
-from interp.plots._style import AFFINE, CORRECT, OTHERS, markevery
+from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery
 from interp.raster import rasterize
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
 
@@ -76,9 +76,7 @@ class MistakesAlongALine:
         }
         for name, y in curves.items():
             self.lines[name].set_data(s, y)
-        values = np.concatenate(list(curves.values()))
-        pad = 0.05 * max(np.ptp(values), 1e-9)
-        self.ax.set_ylim(values.min() - pad, values.max() + pad)
+        fit_y(self.ax, *curves.values())
 
 
 class ClipVertexMistake:
@@ -132,9 +130,7 @@ class ClipVertexMistake:
                 p["a1"], p["a2"], p["w1"], p["w2"], s, p["near"]
             ),
         )
-        low, high = sorted((p["a1"], p["a2"]))
-        pad = 0.05 * max(high - low, 1e-9)
-        self.ax.set_ylim(low - pad, high + pad)
+        fit_y(self.ax, p["a1"], p["a2"])
 
 
 #: Red, green and blue at the corners of the ground plane's first triangle.

@@ -8,6 +8,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from interp.camera import Camera
+from interp.plots._style import bare
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, CheckerViews, checker_views, ground_plane
 
 
@@ -71,8 +72,7 @@ class CheckerPanels:
             self.axes, ("affine", "perspective-correct", "|Δ(u, v)| in texels"), strict=True
         ):
             ax.set_title(title, fontsize=9)
-            ax.set_xticks([])
-            ax.set_yticks([])
+            bare(ax)
         figure = self.axes[2].get_figure(root=False)  # the subfigure, if drawn in one
         self.colorbar = figure.colorbar(self.error, ax=self.axes[2], shrink=0.8)
         self.update()
@@ -141,8 +141,7 @@ class UVImages:
             ax.imshow(np.zeros((height, width)), cmap="cividis", vmin=0, vmax=1) for ax in self.axes
         ]
         for ax in self.axes:
-            ax.set_xticks([])
-            ax.set_yticks([])
+            bare(ax)
         self.update()
 
     def update(self, **params: object) -> None:

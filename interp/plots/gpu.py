@@ -8,7 +8,7 @@ from matplotlib.collections import LineCollection
 
 from interp import approximation
 from interp.camera import Camera
-from interp.plots._style import AFFINE, CORRECT
+from interp.plots._style import AFFINE, CORRECT, bare
 from interp.raster import fragments, interpolate, viewport
 from interp.scenes import LESSON_SIZE, ground_plane
 from interp.texture import checkerboard
@@ -47,8 +47,7 @@ class ClippingView:
         self.image = ax.imshow(np.zeros((height, width)), cmap="gray", vmin=0, vmax=1)
         self.outlines = LineCollection([], colors=CORRECT["color"], linewidths=1.0)
         ax.add_collection(self.outlines)
-        ax.set_xticks([])
-        ax.set_yticks([])
+        bare(ax)
         self.update()
 
     def update(self, **params: object) -> None:

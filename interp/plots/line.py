@@ -12,7 +12,7 @@ from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 
 from interp import lerp
-from interp.plots._style import AFFINE, CORRECT, OTHERS, markevery
+from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery
 
 Point = tuple[float, float]
 
@@ -206,9 +206,7 @@ class ImageStrip:
             self.s, lerp.lerp_perspective(p["a1"], p["a2"], p["w1"], p["w2"], self.s)
         )
         self.affine.set_data(self.s, lerp.lerp_affine(p["a1"], p["a2"], self.s))
-        low, high = sorted((p["a1"], p["a2"]))
-        pad = 0.05 * max(high - low, 1e-9)
-        self.ax.set_ylim(low - pad, high + pad)
+        fit_y(self.ax, p["a1"], p["a2"])
 
 
 class STCurve:
