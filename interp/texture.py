@@ -111,13 +111,9 @@ def checker(
     return 0.5 - 0.5 * _box_filtered_wave(p, footprint_p) * _box_filtered_wave(q, footprint_q)
 
 
-def _square_wave(x: np.ndarray) -> np.ndarray:
-    """+1 on even texels, -1 on odd ones: ``(-1) ** floor(x)``."""
-    return 1.0 - 2.0 * (np.floor(x) % 2)
-
-
 def _box_filtered_wave(x: np.ndarray, width: np.ndarray) -> np.ndarray:
-    """Average of :func:`_square_wave` over ``[x - width/2, x + width/2]``, exactly.
+    """Average over ``[x - width/2, x + width/2]`` of the square wave that is +1 on even
+    texels and -1 on odd ones, exactly.
 
     The square wave's integral from 0 is a triangle wave, ``T(x) = 1 - 2 |frac(x/2) - 1/2|``
     (up at even texels, down at odd ones), so the average is
