@@ -14,10 +14,12 @@ it: a change of any control calls the app's ``draw(**values)``, which calls the 
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 
 import ipywidgets as widgets
 import matplotlib.pyplot as plt
+import numpy as np
 from IPython.display import display
 from matplotlib.figure import Figure
 
@@ -83,8 +85,7 @@ class App:
                 control.layout.width = "420px"
                 control.style.font_size = "18px"
             control.observe(self._changed, names="value")
-        self._handle = None
-        self.refresh()
+        self._handle = None  # the figure is drawn already; displaying it shows that drawing
 
     @property
     def values(self) -> dict[str, object]:
@@ -140,17 +141,14 @@ class App:
 
     _holding_depth = 0
 
-    def _holding(self):
-        app = self
-
-        class Hold:
-            def __enter__(self) -> None:
-                app._holding_depth += 1
-
-            def __exit__(self, *exc: object) -> None:
-                app._holding_depth -= 1
-
-        return Hold()
+    @contextmanager
+    def _holding(self) -> Iterator[None]:
+        """While inside, control changes do not redraw (``set`` redraws once at the end)."""
+        self._holding_depth += 1
+        try:
+            yield
+        finally:
+            self._holding_depth -= 1
 
     def _changed(self, change: dict) -> None:
         if self._holding_depth == 0:
@@ -178,8 +176,6 @@ def slider(
         "style": {"description_width": "initial"},
     }
     if log:
-        import numpy as np
-
         return widgets.FloatLogSlider(
             value=value,
             base=10,
