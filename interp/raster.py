@@ -589,10 +589,7 @@ def rasterize(
     >>> bool(np.allclose(correct[:, 0, 1], t_from_s(affine[:, 0, 1], 1.0, 3.0)))
     True
     """
-    clip, attributes, triangles = _check_scene(clip, attributes, triangles)
-    width = _checks.positive_int(width, "width")
-    height = _checks.positive_int(height, "height")
-    mode = _checks.choice(mode, "mode", MODES)
+    mode = _checks.choice(mode, "mode", MODES)  # a bad mode fails before any work
     span = _checks.positive_int(span, "span")
-    frags = _fragments(clip_triangles(clip, attributes, triangles), width, height)
+    frags = fragments(clip, attributes, triangles, width, height)
     return interpolate(frags, mode, span), frags.covered
