@@ -46,7 +46,7 @@ class DepthAcross:
                 [],
                 markevery=every,
                 label="w (view depth)",
-                **{k: v for k, v in OTHERS[0].items()},
+                **OTHERS[0],
             )[0],
             "1/w": ax.plot(
                 [],
