@@ -20,6 +20,7 @@ from interp import _checks
 from interp.camera import Camera
 from interp.raster import fragment_values, fragments
 from interp.scenes import LESSON_SIZE, ground_plane
+from interp.texture import _texel_error
 
 #: The settings the lesson compares.
 SPANS = (1, 2, 4, 8, 16, 32, 64)
@@ -36,7 +37,7 @@ class Costs:
 
 
 def _mean_texel_error(approximate: np.ndarray, exact: np.ndarray, frequency: float) -> float:
-    return float(np.mean(np.hypot(*(approximate - exact))) * frequency) if exact.size else 0.0
+    return float(np.mean(_texel_error(approximate, exact, frequency))) if exact.size else 0.0
 
 
 def span_costs(

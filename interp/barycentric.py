@@ -14,6 +14,10 @@ each vertex's image it is made of. They sum to 1 and are linear on the screen.
 - ``subdivided``: what Quake's span drawer did to save divides: exact (``smooth``) every N pixels
   along a row, affine in between.
 
+The same ``smooth`` result as *weights*: OpenGL's perspective-correct barycentrics
+``λ_i = (b_i / w_i) / (b0/w0 + b1/w1 + b2/w2)`` (:func:`perspective_weights`), after which the
+attribute is the plain weighted sum ``λ0 a0 + λ1 a1 + λ2 a2``.
+
 Shapes: P pixels, K attributes, vertex index first and pixels last, so that numpy's loops run
 over the pixels: ``b`` is (3, P); per-vertex values are (3, K, P) or (3, P).
 """
@@ -21,6 +25,8 @@ over the pixels: ``b`` is (3, P); per-vertex values are (3, K, P) or (3, P).
 from __future__ import annotations
 
 import numpy as np
+
+from interp import _checks
 
 
 def lerp(b: np.ndarray, per_vertex: np.ndarray) -> np.ndarray:
@@ -72,6 +78,58 @@ def smooth(b: np.ndarray, a_over_w: np.ndarray, one_over_w: np.ndarray) -> np.nd
     array([[0.25]])
     """
     return lerp(b, a_over_w) / lerp(b, one_over_w)  # the per-pixel divide
+
+
+def _perspective_weights(b: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """``λ_i = (b_i / w_i) / Σ_j (b_j / w_j)`` along the first axis."""
+    q = b / w
+    return q / q.sum(axis=0)
+
+
+def perspective_weights(b: object, w: object) -> np.ndarray:
+    """OpenGL's perspective-correct barycentric weights (OpenGL 4.6, eq. 14.9).
+
+    ``λ_i = (b_i / w_i) / (b0/w0 + b1/w1 + b2/w2)``: each screen-space weight divided by its
+    vertex's clip-space w, then all three scaled to sum to 1. The perspective-correct attribute
+    at the pixel is then ``λ0 a0 + λ1 a1 + λ2 a2``, the same number :func:`smooth` computes as
+    ``lerp(b, a/w) / lerp(b, 1/w)``.
+
+    Parameters
+    ----------
+    b : (3,) or (3, ...) array_like
+        Screen-space barycentric coordinates of one or more pixels, vertex first; each set
+        sums to 1 inside the triangle.
+    w : (3,) or (3, ...) array_like
+        The three vertices' clip-space w (view depths), > 0; broadcasts against ``b``.
+
+    Returns
+    -------
+    (3,) or (3, ...) float array
+        The weights λ, summing to 1 along the first axis.
+
+    Examples
+    --------
+    Half-way along the screen edge from a vertex at depth 1 to one at depth 3 is a quarter of
+    the way in space:
+
+    >>> perspective_weights([0.5, 0.5, 0.0], [1.0, 3.0, 2.0])
+    array([0.75, 0.25, 0.  ])
+    """
+    b = _checks.float_array(b, "b")
+    w = _checks.float_array(w, "w")
+    if b.ndim == 0 or b.shape[0] != 3:
+        raise ValueError(f"b must have shape (3,) or (3, ...), one row per vertex, got {b.shape}")
+    if w.ndim == 0 or w.shape[0] != 3:
+        raise ValueError(f"w must have shape (3,) or (3, ...): one w per vertex, got {w.shape}")
+    if np.any(w <= 0):
+        raise ValueError("w must be > 0 (every vertex in front of the camera)")
+    try:
+        b, w = np.broadcast_arrays(b, w)
+    except ValueError:
+        raise ValueError(f"b and w must broadcast together, got {b.shape} and {w.shape}") from None
+    if np.any((b / w).sum(axis=0) == 0):
+        raise ValueError("b must not make b0/w0 + b1/w1 + b2/w2 zero (nothing to divide by)")
+    return _perspective_weights(b, w)
 
 
 def subdivided(

@@ -17,6 +17,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from interp.lerp import _s_from_t
+
 #: The six planes of the view volume as rows ``n``: a clip-space point P is inside when
 #: ``n @ P >= 0``. Near and far first.
 PLANES = np.array(
@@ -176,10 +178,12 @@ def _cut(inner: _Vertex, outer: _Vertex) -> _Vertex:
     t = inner.distance / (inner.distance - outer.distance)  # in [0, 1): inner.distance >= 0 > outer
     point = inner.clip + t[:, None] * (outer.clip - inner.clip)
     # noperspective attributes are linear on the screen: use the screen parameter of the point,
-    # s = t w_out / ((1 - t) w_in + t w_out)  (interp.lerp.s_from_t; w here may be <= 0).
-    w_point = point[:, 3]
-    safe = np.where(w_point > 0, w_point, 1.0)
-    s = np.where(w_point > 0, t * outer.clip[:, 3] / safe, t)
+    # s_from_t(t, w_in, w_out). The outer vertex may be behind the eye (w <= 0), where the screen
+    # parameter means nothing; so may the point itself, only when the piece is degenerate (it is
+    # dropped later), and then s = t stands in.
+    in_front = point[:, 3] > 0  # then (1 - t) w_in + t w_out, the point's w, is > 0
+    w_in, w_out = (np.where(in_front, v.clip[:, 3], 1.0) for v in (inner, outer))
+    s = _s_from_t(t, w_in, w_out)  # = t where w_in = w_out = 1 stand in
     return _Vertex(
         point,
         inner.smooth + t[:, None] * (outer.smooth - inner.smooth),

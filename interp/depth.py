@@ -41,10 +41,18 @@ def ndc_depth(w: object, near: float, far: float) -> np.ndarray | float:
     >>> ndc_depth([1.0, 10.0], near=1.0, far=10.0)
     array([-1.,  1.])
     """
-    w = _view_depth(w)
-    near, far = _planes(near, far)
-    z = (far + near) / (far - near) - 2 * far * near / ((far - near) * w)
+    z = _ndc_depth(_view_depth(w), *_planes(near, far))
     return z.item() if z.ndim == 0 else z
+
+
+def _ndc_depth(w: np.ndarray, near: float, far: float) -> np.ndarray:
+    """``z_clip / w`` for the matrix of :func:`interp.perspective`: ``A + B / w``."""
+    return (far + near) / (far - near) - 2 * far * near / ((far - near) * w)
+
+
+def _window_depth(w: np.ndarray, near: float, far: float) -> np.ndarray:
+    """``(NDC z + 1) / 2``."""
+    return (_ndc_depth(w, near, far) + 1) / 2
 
 
 def window_depth(w: object, near: float, far: float) -> np.ndarray | float:
@@ -57,7 +65,7 @@ def window_depth(w: object, near: float, far: float) -> np.ndarray | float:
     >>> round(window_depth(2.0, near=1.0, far=10.0), 4)   # 1/9 of the way in w, over half in z
     0.5556
     """
-    z = (np.asarray(ndc_depth(w, near, far)) + 1) / 2
+    z = _window_depth(_view_depth(w), *_planes(near, far))
     return z.item() if z.ndim == 0 else z
 
 
@@ -89,9 +97,7 @@ def depth_resolution(
     w = _view_depth(w)
     near, far = _planes(near, far)
     buffer = _checks.choice(buffer, "buffer", ("float32", "fixed24"))
-    stored = (((far + near) / (far - near) - 2 * far * near / ((far - near) * w) + 1) / 2).astype(
-        np.float32
-    )
+    stored = _window_depth(w, near, far).astype(np.float32)
     step = np.abs(np.spacing(stored)).astype(np.float64) if buffer == "float32" else 2.0**-24
     result = step * (far - near) * w**2 / (far * near)
     return result.item() if np.ndim(result) == 0 else result

@@ -15,6 +15,11 @@ a1, a2 : an attribute's values at A and B (intensity, colour, texture coordinate
 The result the lessons derive (CS5500 handout; Low, eq. 12 and 16): "interpolate first, then
 project" gives ``s = t w2 / ((1 - t) w1 + t w2)``; equivalently ``1/w`` and ``a/w`` vary
 linearly in s, so the right attribute is ``lerp(a/w) / lerp(1/w)``.
+
+One home per formula: each public function checks its arguments, then calls an unchecked kernel
+of the same name with a leading underscore (``s_from_t`` calls ``_s_from_t``). The rest of the
+package (clipping, the plots, the exercise checkers) calls the kernels, so every formula is
+written exactly once, here.
 """
 
 from __future__ import annotations
@@ -39,6 +44,28 @@ def _fraction(x: object, name: str) -> np.ndarray:
 
 def _result(x: np.ndarray) -> np.ndarray | float:
     return x.item() if x.ndim == 0 else x
+
+
+def _s_from_t(t: np.ndarray, w1: np.ndarray, w2: np.ndarray) -> np.ndarray:
+    """Interpolate first, then project: ``t w2 / ((1 - t) w1 + t w2)``."""
+    return t * w2 / ((1 - t) * w1 + t * w2)
+
+
+def _t_from_s(s: np.ndarray, w1: np.ndarray, w2: np.ndarray) -> np.ndarray:
+    """The inverse of :func:`_s_from_t`: ``s w1 / (s w1 + (1 - s) w2)``."""
+    return s * w1 / (s * w1 + (1 - s) * w2)
+
+
+def _lerp(a1: np.ndarray, a2: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """``(1 - s) a1 + s a2``."""
+    return (1 - s) * a1 + s * a2
+
+
+def _gap_peak(w1: np.ndarray, w2: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Where ``|t - s|`` peaks, and its height: ``sqrt(w2) / (sqrt(w1) + sqrt(w2))`` and
+    ``|sqrt(w2) - sqrt(w1)| / (sqrt(w1) + sqrt(w2))``."""
+    r1, r2 = np.sqrt(w1), np.sqrt(w2)
+    return r2 / (r1 + r2), np.abs(r2 - r1) / (r1 + r2)
 
 
 def s_from_t(t: object, w1: object, w2: object) -> np.ndarray | float:
@@ -66,10 +93,9 @@ def s_from_t(t: object, w1: object, w2: object) -> np.ndarray | float:
     """
     t = _fraction(t, "t")
     w1, w2 = _depths(w1, w2)
-    w = (1 - t) * w1 + t * w2  # the depth of P(t): interpolate first...
-    if np.any(w <= 0):
+    if np.any(_lerp(w1, w2, t) <= 0):  # the depth of P(t)
         raise ValueError("t must keep the point in front of the camera: (1-t) w1 + t w2 > 0")
-    return _result(t * w2 / w)  # ...then project
+    return _result(_s_from_t(t, w1, w2))
 
 
 def t_from_s(s: object, w1: object, w2: object) -> np.ndarray | float:
@@ -98,10 +124,9 @@ def t_from_s(s: object, w1: object, w2: object) -> np.ndarray | float:
     """
     s = _fraction(s, "s")
     w1, w2 = _depths(w1, w2)
-    denominator = s * w1 + (1 - s) * w2
-    if np.any(denominator <= 0):
+    if np.any(_lerp(w2, w1, s) <= 0):
         raise ValueError("s must be where the line is visible: s w1 + (1-s) w2 > 0")
-    return _result(s * w1 / denominator)
+    return _result(_t_from_s(s, w1, w2))
 
 
 def project_to_image_plane(points: object, d: float = 1.0) -> np.ndarray | float:
@@ -146,7 +171,7 @@ def lerp_affine(a1: object, a2: object, s: object) -> np.ndarray | float:
     """
     a1, a2 = _checks.float_array(a1, "a1"), _checks.float_array(a2, "a2")
     s = _fraction(s, "s")
-    return _result((1 - s) * a1 + s * a2)
+    return _result(_lerp(a1, a2, s))
 
 
 def lerp_inverse_w(w1: object, w2: object, s: object) -> np.ndarray | float:
@@ -159,7 +184,7 @@ def lerp_inverse_w(w1: object, w2: object, s: object) -> np.ndarray | float:
     """
     w1, w2 = _depths(w1, w2)
     s = _fraction(s, "s")
-    return _result((1 - s) / w1 + s / w2)
+    return _result(_lerp(1 / w1, 1 / w2, s))
 
 
 def lerp_perspective(
@@ -191,8 +216,40 @@ def lerp_perspective(
     a1, a2 = _checks.float_array(a1, "a1"), _checks.float_array(a2, "a2")
     w1, w2 = _depths(w1, w2)
     s = _fraction(s, "s")
-    a_over_w = (1 - s) * a1 / w1 + s * a2 / w2
-    one_over_w = (1 - s) / w1 + s / w2
-    if np.any(one_over_w <= 0):
+    if np.any(_lerp(1 / w1, 1 / w2, s) <= 0):
         raise ValueError("s must be where the line is visible: (1-s)/w1 + s/w2 > 0")
-    return _result(a_over_w / one_over_w)
+    return _result(_lerp_perspective(a1, a2, w1, w2, s))
+
+
+def _lerp_perspective(
+    a1: np.ndarray, a2: np.ndarray, w1: np.ndarray, w2: np.ndarray, s: np.ndarray
+) -> np.ndarray:
+    """``lerp(a/w) / lerp(1/w)``: the perspective-correct attribute at screen parameter s."""
+    return _lerp(a1 / w1, a2 / w2, s) / _lerp(1 / w1, 1 / w2, s)
+
+
+def gap_peak(w1: object, w2: object) -> tuple[np.ndarray | float, np.ndarray | float]:
+    """Where the gap ``|t - s|`` between object and screen parameter peaks, and how large it gets.
+
+    Lesson 3 derives it: ``dt/ds = w1 w2 / (s w1 + (1 - s) w2)**2`` equals 1 where
+    ``s w1 + (1 - s) w2 = sqrt(w1 w2)``, so the peak is at ``s* = sqrt(w2) / (sqrt(w1) +
+    sqrt(w2))`` and the gap there is ``|sqrt(w2) - sqrt(w1)| / (sqrt(w1) + sqrt(w2))``.
+
+    Parameters
+    ----------
+    w1, w2 : array_like
+        View depths of A and B, > 0; they broadcast together.
+
+    Returns
+    -------
+    s_star, gap : float or ndarray
+        Where the gap peaks, and its height there.
+
+    Examples
+    --------
+    >>> gap_peak(1.0, 9.0)
+    (0.75, 0.5)
+    """
+    w1, w2 = _depths(w1, w2)
+    s_star, gap = _gap_peak(w1, w2)
+    return _result(s_star), _result(gap)

@@ -16,7 +16,7 @@ import numpy as np
 from interp import _checks
 from interp.camera import Camera
 from interp.raster import MODES, Fragments, fragment_footprints, fragment_values, fragments
-from interp.texture import MAX_FREQUENCY, checker
+from interp.texture import MAX_FREQUENCY, _texel_error, checker
 
 
 @dataclass(frozen=True)
@@ -208,7 +208,7 @@ def checker_views(
         footprint_p, footprint_q = fragment_footprints(frags, mode, uv[mode]) * frequency
         return frags.image(checker(p, q, footprint_p, footprint_q), background)
 
-    error = np.hypot(*(uv[mode] - uv["perspective"])) * frequency
+    error = _texel_error(uv[mode], uv["perspective"], frequency)
     return CheckerViews(
         correct=texture("perspective"),
         approximate=texture(mode),

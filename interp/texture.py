@@ -175,4 +175,9 @@ def texel_error(uv: object, uv_reference: object, frequency: float = 8) -> np.nd
             f"{uv_reference.shape}"
         )
     frequency = _checks.real_in(frequency, "frequency", 0, MAX_FREQUENCY, low_open=True)
-    return np.hypot(*np.moveaxis(uv - uv_reference, 2, 0)) * frequency
+    return _texel_error(np.moveaxis(uv, 2, 0), np.moveaxis(uv_reference, 2, 0), frequency)
+
+
+def _texel_error(uv: np.ndarray, uv_reference: np.ndarray, frequency: float) -> np.ndarray:
+    """``|Δ(u, v)| * frequency`` for (u, v) along the first axis: (2, ...) arrays in, (...) out."""
+    return np.hypot(*(uv - uv_reference)) * frequency

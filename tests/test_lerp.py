@@ -97,10 +97,12 @@ def test_broadcasting():
 
 
 def test_gap_peaks_where_the_derivation_says():
-    # |t - s| peaks at s* = sqrt(w2) / (sqrt(w1) + sqrt(w2)) (set d(t - s)/ds = 0).
-    w1, w2 = 1.0, 9.0
+    # interp.gap_peak is the closed form; a dense numerical search must find the same peak.
+    assert interp.gap_peak(1.0, 9.0) == (0.75, 0.5)  # exact: sqrt 9 = 3
     s = np.linspace(0, 1, 200001)
-    gap = np.abs(interp.t_from_s(s, w1, w2) - s)
-    s_star = np.sqrt(w2) / (np.sqrt(w1) + np.sqrt(w2))
-    assert s[gap.argmax()] == pytest.approx(s_star, abs=1e-5)
-    assert gap.max() == pytest.approx((np.sqrt(w2) - np.sqrt(w1)) / (np.sqrt(w2) + np.sqrt(w1)))
+    for w1, w2 in [(1.0, 9.0), (5.0, 0.3), (2.0, 2.5), (0.1, 20.0)]:
+        gap = np.abs(interp.t_from_s(s, w1, w2) - s)
+        s_star, height = interp.gap_peak(w1, w2)
+        assert s[gap.argmax()] == pytest.approx(s_star, abs=1e-5)
+        assert gap.max() == pytest.approx(height, abs=1e-9)
+    np.testing.assert_allclose(interp.gap_peak([1.0, 4.0], 4.0)[0], [2 / 3, 0.5])

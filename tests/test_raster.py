@@ -194,3 +194,18 @@ def test_fragments_barycentrics_sum_to_one_and_reproduce_positions(rng):
     window = interp.viewport(frags.clipped.clip, 40, 30)[frags.piece]  # (P, 3, 3)
     x = np.einsum("ip,pi->p", frags.barycentric, window[..., 0])
     np.testing.assert_allclose(x, frags.column + 0.5, atol=1e-9)
+
+
+def test_perspective_weights_give_what_rasterize_draws():
+    # OpenGL's λ_i = (b_i/w_i) / Σ b_j/w_j, applied to the fragments' screen-space barycentrics,
+    # must give rasterize's perspective-correct values exactly (the same formula, one home).
+    clip, attributes, triangles = random_scene(np.random.default_rng(11), 30, behind=True)
+    frags = interp.fragments(clip, attributes, triangles, 64, 48)
+    w = frags.clipped.clip[frags.piece, :, 3].T  # (3, P): each fragment's vertex w
+    weights = interp.perspective_weights(frags.barycentric, w)
+    np.testing.assert_allclose(weights.sum(axis=0), 1.0, atol=1e-12)
+    a = frags.clipped.smooth[frags.piece]  # (P, 3, K)
+    expected = np.einsum("ip,pik->kp", weights, a)
+    from interp.raster import fragment_values
+
+    np.testing.assert_allclose(fragment_values(frags), expected, atol=1e-12)

@@ -9,7 +9,7 @@ from interp.plots.attributes import ClipVertexMistake, ColourTriangle, MistakesA
 from interp.plots.checker import CheckerPanels, UVImages
 from interp.plots.depth import DepthAcross, DepthPrecision
 from interp.plots.gpu import ApproximationLab, ClippingView
-from interp.plots.line import GapPlot, ImageStrip, LineView, STCurve, STFamily, gap_peak
+from interp.plots.line import GapPlot, ImageStrip, LineView, STCurve, STFamily
 
 __all__ = [
     "AFFINE",
@@ -29,6 +29,5 @@ __all__ = [
     "STCurve",
     "STFamily",
     "UVImages",
-    "gap_peak",
     "styled",
 ]

@@ -302,22 +302,6 @@ class STFamily:
         self.current.set_data(self.s, lerp.t_from_s(self.s, 1.0, self.ratio))
 
 
-def gap_peak(w1: float, w2: float) -> tuple[float, float]:
-    """Where ``|t - s|`` peaks, and how large it gets: derived in lesson 3.
-
-    ``d(t - s)/ds = 0`` where ``s w1 + (1 - s) w2 = sqrt(w1 w2)``, so
-    ``s* = sqrt(w2) / (sqrt(w1) + sqrt(w2))`` and the gap there is
-    ``|sqrt(w2) - sqrt(w1)| / (sqrt(w1) + sqrt(w2))``.
-
-    Examples
-    --------
-    >>> gap_peak(1.0, 9.0)
-    (0.75, 0.5)
-    """
-    r1, r2 = np.sqrt(w1), np.sqrt(w2)
-    return float(r2 / (r1 + r2)), float(abs(r2 - r1) / (r1 + r2))
-
-
 class GapPlot:
     """``|t - s|`` against s, with the derived peak and the sampled maximum marked.
 
@@ -365,7 +349,7 @@ class GapPlot:
         w1, w2 = float(self.params["w1"]), float(self.params["w2"])
         gap = np.abs(lerp.t_from_s(self.s, w1, w2) - self.s)
         self.curve.set_data(self.s, gap)
-        self.derived = gap_peak(w1, w2)
+        self.derived = lerp.gap_peak(w1, w2)
         k = int(np.argmax(gap))
         self.measured = (float(self.s[k]), float(gap[k]))
         self.peak.set_data([self.derived[0]], [self.derived[1]])
