@@ -17,15 +17,27 @@ def lerp_with_window_z(
 ) -> np.ndarray | float:
     """Dividing by the depth buffer's z instead of w: ``lerp(a/z) / lerp(1/z)``, z = window z.
 
-    Window z is ``A + B/w``, not ``w``, so ``a/z`` is not linear on the screen.
+    Window z is ``A + B/w``, not ``w``, so ``a/z`` is not linear on the screen. Computed in the
+    form with both depths multiplied through (Ek's first form, ``(z2 (1-s) a1 + z1 s a2) /
+    (z2 (1-s) + z1 s)``), so a point on the near plane, where window z is 0, needs no special
+    case: there the mistake shows A's value all the way to s = 1.
 
     Examples
     --------
     >>> round(lerp_with_window_z(0.0, 1.0, 2.0, 6.0, 0.5, near=1.0, far=10.0), 3)  # right: 0.25
     0.375
+    >>> lerp_with_window_z(0.0, 1.0, 1.0, 6.0, 0.5, near=1.0, far=10.0)  # A on the near plane
+    0.0
     """
-    z1, z2 = depth.window_depth(w1, near, far), depth.window_depth(w2, near, far)
-    return lerp.lerp_perspective(a1, a2, z1, z2, s)
+    a1, a2, s = (np.asarray(x, dtype=float) for x in (a1, a2, s))
+    z1, z2 = (np.clip(depth.window_depth(w, near, far), 0.0, 1.0) for w in (w1, w2))
+    weight1, weight2 = z2 * (1 - s), z1 * s
+    total = weight1 + weight2
+    same = total == 0  # both ends on the near plane: z is 0 throughout, nothing to divide by
+    value = np.where(
+        same, lerp.lerp_affine(a1, a2, s), (weight1 * a1 + weight2 * a2) / np.where(same, 1, total)
+    )
+    return value.item() if value.ndim == 0 else value
 
 
 def lerp_divided_too_early(

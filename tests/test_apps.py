@@ -13,8 +13,8 @@ from matplotlib.collections import LineCollection
 
 import interp
 from interp import approximation, apps
-from interp.apps.scenes import RESOLUTIONS
 from interp.plots.gpu import LAB_CAMERA
+from interp.plots.registry import RESOLUTIONS
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, checker_views
 
 
@@ -52,7 +52,7 @@ def camera_values(**changes):
 def test_the_problem_shows_where_the_midpoints_go():
     app = apps.the_problem()
     app.set(A_x=-1.0, A_w=2.0, B_x=2.0, B_w=6.0, d=1.5)
-    view = app.view
+    view = app.plot.view
     np.testing.assert_allclose(view.segment.get_xydata(), [[2.0, -1.0], [6.0, 2.0]])
     t = interp.t_from_s(0.5, 2.0, 6.0)
     expected_C = np.array([-1.0, -2.0]) + t * (np.array([2.0, -6.0]) - [-1.0, -2.0])
@@ -72,19 +72,21 @@ def test_projecting_a_line_links_all_three_panels():
     )
     s = np.linspace(0, 1, 101)
     np.testing.assert_allclose(
-        app.strip.correct.get_ydata(), interp.lerp_perspective(0.0, 1.0, 1.0, 9.0, s)
+        app.plot.strip.correct.get_ydata(), interp.lerp_perspective(0.0, 1.0, 1.0, 9.0, s)
     )
     samples = (np.arange(5) + 0.5) / 5
-    np.testing.assert_allclose(app.curve.samples.get_ydata(), interp.t_from_s(samples, 1.0, 9.0))
-    assert len(app.view.fan.get_segments()) == 5
+    np.testing.assert_allclose(
+        app.plot.curve.samples.get_ydata(), interp.t_from_s(samples, 1.0, 9.0)
+    )
+    assert len(app.plot.view.fan.get_segments()) == 5
 
 
 def test_dragging_an_endpoint_moves_every_linked_panel():
     app = apps.projecting_a_line()
     app.figure.canvas.draw()
-    ax = app.view.ax
-    start = app.view.points["A"]
-    before = app.strip.correct.get_ydata().copy()
+    ax = app.plot.view.ax
+    start = app.plot.view.points["A"]
+    before = app.plot.strip.correct.get_ydata().copy()
 
     def mouse(name, w, x):
         px, py = ax.transData.transform((w, x))
@@ -97,11 +99,11 @@ def test_dragging_an_endpoint_moves_every_linked_panel():
     assert app.controls["A_w"].value == pytest.approx(6.0, abs=0.05)
     assert app.controls["A_x"].value == pytest.approx(1.0, abs=0.05)
     np.testing.assert_allclose(
-        app.view.points["A"], [app.controls["A_x"].value, -app.controls["A_w"].value]
+        app.plot.view.points["A"], [app.controls["A_x"].value, -app.controls["A_w"].value]
     )
-    assert not np.allclose(app.strip.correct.get_ydata(), before)
+    assert not np.allclose(app.plot.strip.correct.get_ydata(), before)
     np.testing.assert_allclose(
-        app.strip.correct.get_ydata(),
+        app.plot.strip.correct.get_ydata(),
         interp.lerp_perspective(
             0.0, 1.0, app.controls["A_w"].value, app.controls["B_w"].value, np.linspace(0, 1, 101)
         ),
@@ -118,18 +120,18 @@ def test_dragging_an_endpoint_moves_every_linked_panel():
 def test_st_mapping_marks_the_derived_peak():
     app = apps.st_mapping()
     app.set(w1=1.0, w2=9.0)
-    assert app.gap.peak.get_xydata()[0] == pytest.approx([0.75, 0.5])
+    assert app.plot.gap.peak.get_xydata()[0] == pytest.approx([0.75, 0.5])
     np.testing.assert_allclose(
-        app.family.current.get_ydata(), interp.t_from_s(np.linspace(0, 1, 201), 1.0, 9.0)
+        app.plot.family.current.get_ydata(), interp.t_from_s(np.linspace(0, 1, 201), 1.0, 9.0)
     )
 
 
 def test_depth_app_curves():
     app = apps.depth()
     app.set(w1=2.0, w2=20.0, near=0.5, far=50.0, buffer="fixed24")
-    ndc = app.across.curves["NDC z"].get_ydata()
+    ndc = app.plot.across.curves["NDC z"].get_ydata()
     np.testing.assert_allclose(ndc, np.linspace(0, 1, 101), atol=1e-12)  # straight
-    w, step = app.precision.lines[0].get_data()
+    w, step = app.plot.precision.lines[0].get_data()
     np.testing.assert_allclose(step, interp.depth_resolution(w, 0.5, 50.0, "fixed24"))
 
 
@@ -138,12 +140,12 @@ def test_attributes_app_curves():
     app.set(a1=0.2, a2=-0.4, w1=2.0, w2=8.0, behind=-3.0, near=0.25)
     s = np.linspace(0, 1, 101)
     np.testing.assert_allclose(
-        app.line.lines["perspective-correct"].get_ydata(),
+        app.plot.line.lines["perspective-correct"].get_ydata(),
         interp.lerp_perspective(0.2, -0.4, 2.0, 8.0, s),
     )
     a_c = interp.mistakes.clip_vertex_attribute(0.2, -0.4, 2.0, -3.0, 0.25)
     np.testing.assert_allclose(
-        app.clip.right.get_ydata(), interp.lerp_perspective(0.2, a_c, 2.0, 0.25, s)
+        app.plot.clip.right.get_ydata(), interp.lerp_perspective(0.2, a_c, 2.0, 0.25, s)
     )
 
 
@@ -151,7 +153,7 @@ def test_attributes_app_curves():
 def test_colour_images_are_rasterize_output(make, whole):
     app = make()
     app.set(**camera_values(pitch=40.0, height=1.5))
-    image = app.images[1]
+    image = app.plot.images[1]
     camera = interp.Camera(**camera_values(pitch=40.0, height=1.5)).fitted(
         image.width, image.height
     )
@@ -184,7 +186,7 @@ def test_checkerboards_show_checker_views():
         mode="subdivided",
         span=8,
     )
-    panels = app.panels
+    panels = app.plot.panels
     np.testing.assert_array_equal(panels.approximate.get_array(), views.approximate)
     np.testing.assert_array_equal(panels.correct.get_array(), views.correct)
     np.testing.assert_array_equal(panels.error.get_array(), views.error)
@@ -194,7 +196,7 @@ def test_checkerboards_show_checker_views():
 def test_uv_images_are_masked_where_nothing_is_drawn():
     app = apps.uv_images()
     app.set(**camera_values(yaw=45.0), mode="affine")
-    u = app.uv.images[0].get_array()
+    u = app.plot.uv.images[0].get_array()
     assert np.ma.isMaskedArray(u) and u.mask.any() and (~u.mask).any()
     assert 0 <= u.min() and u.max() <= 1
 
@@ -202,8 +204,8 @@ def test_uv_images_are_masked_where_nothing_is_drawn():
 def test_clipping_counts_the_pieces():
     app = apps.clipping()
     app.set(**camera_values(height=0.02, pitch=10.0, near=0.01, distance=0.0))
-    assert app.view.counts["pieces"] > app.view.counts["visible triangles"]
-    assert str(app.view.counts["pieces"]) in app.view.ax.get_title()
+    assert app.plot.view.counts["pieces"] > app.plot.view.counts["visible triangles"]
+    assert str(app.plot.view.counts["pieces"]) in app.plot.view.ax.get_title()
 
 
 def test_approximation_lab_plots_the_costs():
@@ -212,7 +214,7 @@ def test_approximation_lab_plots_the_costs():
     app.set(**values)
     camera = interp.Camera(**{**LAB_CAMERA.__dict__, **values})
     spans = approximation.span_costs(camera, 192, 144)
-    x, y = app.lab.spans.get_data()
+    x, y = app.plot.lab.spans.get_data()
     np.testing.assert_allclose(x, spans.divides_per_pixel[1:])
     np.testing.assert_allclose(y, spans.mean_error[1:])
 

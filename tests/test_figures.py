@@ -10,13 +10,14 @@ import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+import matplotlib.figure
 import numpy as np
 import pytest
 
 from interp import figures
 from interp.plots import AFFINE, CORRECT
 
-ALL_FILES = {f"{name}.{fmt}" for name in figures.BY_NAME for fmt in figures.FORMATS}
+ALL_FILES = {f"{name}.{fmt}" for name in figures.FIGURES for fmt in figures.FORMATS}
 
 
 @pytest.fixture(scope="module")
@@ -27,15 +28,18 @@ def exported(tmp_path_factory):
     return out
 
 
-def test_at_least_ten_figures_covering_every_lesson():
-    assert len(figures.SPECS) >= 10
-    lessons = {spec.caption.rsplit("(Lesson ", 1)[1][0] for spec in figures.SPECS}
-    assert lessons == set("1234567")
+def test_every_app_figure_is_exported_and_covers_every_lesson():
+    from interp import apps
+
+    assert {name.replace("-", "_") for name in figures.FIGURES} == set(apps.ALL)
+    for figure_class in figures.FIGURES.values():
+        assert figure_class.caption.endswith(f"(Lesson {figure_class.lesson})")
+    assert {f.lesson for f in figures.FIGURES.values()} == set(range(1, 8))
 
 
 def test_every_figure_in_every_format(exported):
     assert ALL_FILES | {"handout.pdf"} <= {p.name for p in exported.iterdir()}
-    for name, spec in figures.BY_NAME.items():
+    for name, figure_class in figures.FIGURES.items():
         pdf = (exported / f"{name}.pdf").read_bytes()
         assert pdf.startswith(b"%PDF") and b"/FontFile2" in pdf  # TrueType fonts embedded
         svg = ET.parse(exported / f"{name}.svg").getroot()
@@ -44,7 +48,8 @@ def test_every_figure_in_every_format(exported):
         from PIL import Image
 
         with Image.open(exported / f"{name}.png") as png:
-            assert png.size == (round(spec.size[0] * 60), round(spec.size[1] * 60))
+            width, height = figure_class.print_size
+            assert png.size == (round(width * 60), round(height * 60))
 
 
 def test_no_temporary_files_left(exported):
@@ -54,13 +59,13 @@ def test_no_temporary_files_left(exported):
 def test_handout_has_a_cover_and_a_page_per_figure(exported):
     pdf = (exported / "handout.pdf").read_bytes()
     pages = pdf.count(b"/Type /Page") - pdf.count(b"/Type /Pages")
-    assert pages == 1 + len(figures.SPECS)
+    assert pages == 1 + len(figures.FIGURES)
 
 
 def test_sizes_fit_a_column_of_a4_or_letter():
-    for spec in figures.SPECS:
-        assert spec.size[0] <= figures.WIDE <= 6.5
-        assert spec.size[1] <= 9
+    for figure_class in figures.FIGURES.values():
+        assert figure_class.print_size[0] <= figures.WIDE <= 6.5
+        assert figure_class.print_size[1] <= 9
 
 
 def test_deterministic_bytes(exported, tmp_path):
@@ -73,17 +78,26 @@ def test_source_date_epoch_is_honoured(tmp_path, monkeypatch):
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")  # 2023-11-14
     assert (
         figures.main(
-            ["--out", str(tmp_path), "--only", "gap-peak", "--format", "pdf", "svg", "--no-handout"]
+            [
+                "--out",
+                str(tmp_path),
+                "--only",
+                "st-mapping",
+                "--format",
+                "pdf",
+                "svg",
+                "--no-handout",
+            ]
         )
         == 0
     )
-    assert b"D:20231114" in (tmp_path / "gap-peak.pdf").read_bytes()
-    assert "2023-11-14" in (tmp_path / "gap-peak.svg").read_text()
+    assert b"D:20231114" in (tmp_path / "st-mapping.pdf").read_bytes()
+    assert "2023-11-14" in (tmp_path / "st-mapping.svg").read_text()
 
 
 def test_without_source_date_epoch_no_date(exported):
-    assert b"CreationDate" not in (exported / "midpoint.pdf").read_bytes()
-    assert "<dc:date>" not in (exported / "midpoint.svg").read_text()
+    assert b"CreationDate" not in (exported / "the-problem.pdf").read_bytes()
+    assert "<dc:date>" not in (exported / "the-problem.svg").read_text()
 
 
 def test_progress_lines(tmp_path, capsys):
@@ -93,7 +107,7 @@ def test_progress_lines(tmp_path, capsys):
                 "--out",
                 str(tmp_path),
                 "--only",
-                "st-family",
+                "st-mapping",
                 "depth",
                 "--format",
                 "png",
@@ -104,7 +118,7 @@ def test_progress_lines(tmp_path, capsys):
         == 0
     )
     lines = capsys.readouterr().out.splitlines()
-    assert lines[0].split()[:2] == ["st-family", str(tmp_path / "st-family.png")]
+    assert lines[0].split()[:2] == ["st-mapping", str(tmp_path / "st-mapping.png")]
     assert lines[0].endswith(" s") and lines[1].startswith("depth")
     assert lines[2].startswith("handout")
 
@@ -112,9 +126,11 @@ def test_progress_lines(tmp_path, capsys):
 def test_list_names_every_figure(capsys):
     assert figures.main(["--list"]) == 0
     out = capsys.readouterr().out
-    for name in figures.BY_NAME:
+    for name, figure_class in figures.FIGURES.items():
         assert name in out
-    assert "pitch=" in out
+        for param, spec in figure_class.PARAMS.items():
+            assert f"{param}={spec.default}  in {spec.range}" in out
+    assert "pitch=15.0  in [-10, 90]" in out
 
 
 def test_help_has_an_example():
@@ -131,15 +147,22 @@ def test_help_has_an_example():
     "argv, words",
     [
         (["--only", "checkerbords"], "unknown figure 'checkerbords'"),
-        (["--set", "pitch=steep"], "--set pitch must be float, got 'steep'"),
-        (["--set", "pitch=400"], "pitch must be in [-89, 90]"),
-        (["--set", "quads=0", "--only", "checkerboards"], "quads must be an integer in"),
+        (["--set", "pitch=steep"], "--set pitch: pitch must be a number, got 'steep'"),
+        (["--set", "pitch=400"], "pitch must be in [-10, 90], got 400"),
+        (["--set", "quads=0", "--only", "checkerboards"], "quads must be in [1, 32], got 0"),
+        (["--set", "quads=2.5", "--only", "clipping"], "quads must be a whole number, got 2.5"),
+        (["--set", "samples=1e9"], "samples must be in [1, 32]"),
+        (["--set", "samples=-5"], "samples must be in [1, 32], got -5"),
+        (["--set", "samples=" + "9" * 5000], "samples must be a finite number of at most 40"),
+        (["--set", "pitch=nan"], "pitch must be a finite number"),
+        (["--set", "near=0"], "near must be in [0.001, 1], got 0"),
         (["--set", "zoom=2"], "no figure being drawn has a parameter 'zoom'"),
         (["--set", "depth.pitch=2"], "no figure being drawn has a parameter 'pitch'"),
-        (["--set", "fan.samples=3", "--only", "midpoint"], "'fan' is not among the figures"),
+        (["--set", "clipping.quads=3", "--only", "depth"], "'clipping' is not among the figures"),
         (["--set", "pitch"], "--set takes KEY=VALUE"),
         (["--dpi", "0"], "--dpi must be between 10 and 1200"),
-        (["--set", "depth-precision.buffer=fixed16"], "buffer must be one of"),
+        (["--set", "depth.buffer=fixed16"], "buffer must be one of float32, fixed24"),
+        (["--set", "resolution=100000 x 3"], "resolution must be one of 160 x 120"),
         (["--format", "jpg"], "invalid choice: 'jpg'"),
     ],
 )
@@ -158,8 +181,11 @@ def test_bad_usage_fails_before_writing(tmp_path, capsys, argv, words):
     [
         ("{not json", "is not valid JSON"),
         ("[1, 2]", "must hold a JSON object"),
-        ('{"pitch": "up"}', "pitch must be float"),
-        ('{"checkerboards": {"frequency": true}}', "frequency must be float"),
+        ('{"pitch": "up"}', "pitch must be a number, got 'up'"),
+        ('{"checkerboards": {"frequency": true}}', "frequency must be a number, got bool"),
+        ('{"pitch": 1e999}', "pitch must be finite"),
+        ('{"samples": ' + "9" * 5000 + "}", "nested too deeply or holds a huge number"),
+        ("[" * 100000 + "]" * 100000, "nested too deeply or holds a huge number"),
     ],
 )
 def test_bad_params_file(tmp_path, capsys, content, words):
@@ -179,6 +205,7 @@ def test_params_file_and_set_apply(tmp_path):
     file = tmp_path / "params.json"
     file.write_text(json.dumps({"pitch": 30, "checkerboards": {"frequency": 12}}))
     params = figures.resolve_params(["checkerboards", "colour-quad"], ["yaw=10"], str(file))
+    assert params["checkerboards"]["resolution"] == "320 x 240"  # a default untouched
     assert params["checkerboards"]["pitch"] == 30.0 and params["colour-quad"]["pitch"] == 30.0
     assert params["checkerboards"]["frequency"] == 12.0
     assert params["colour-quad"]["yaw"] == 10.0
@@ -194,31 +221,17 @@ def test_existing_folder_is_reused_not_wiped(tmp_path):
     assert keep.read_text() == "mine" and (tmp_path / "depth.svg").exists()
 
 
-def test_interrupted_write_leaves_no_partial_file(tmp_path, monkeypatch):
-    target = tmp_path / "depth.pdf"
-    target.write_bytes(b"the old, complete file")
-    figure = figures.render(figures.BY_NAME["depth"], figures.BY_NAME["depth"].params)
-
-    def crash(name, **kwargs):
-        Path(name).write_bytes(b"%PDF-half")
-        raise KeyboardInterrupt
-
-    monkeypatch.setattr(figure, "savefig", crash)
-    with pytest.raises(KeyboardInterrupt):
-        figures.save(figure, target, "pdf", 100)
-    assert target.read_bytes() == b"the old, complete file"
-    assert os.listdir(tmp_path) == ["depth.pdf"]
-
-
 def test_checkerboard_content_tilted_and_straight_down():
-    spec = figures.BY_NAME["checkerboards"]
-    tilted = figures.render(spec, {**spec.params, "pitch": 20.0})
+    checker = figures.FIGURES["checkerboards"]
+    tilted = figures.render(checker, {**checker.defaults(), "pitch": 20.0})
     panels = tilted.axes[0].images[0], tilted.axes[1].images[0]
     affine, correct = (np.asarray(p.get_array()) for p in panels)
     drawn = correct != 0.5
     differ = np.mean(np.abs(affine - correct)[drawn] > 0.5)
     assert differ > 0.05, "a tilted camera should bend the affine checkerboard"
-    down = figures.render(spec, {**spec.params, "pitch": 90.0, "distance": 0.0, "height": 3.0})
+    down = figures.render(
+        checker, {**checker.defaults(), "pitch": 90.0, "distance": 0.0, "height": 3.0}
+    )
     affine, correct = (np.asarray(ax.images[0].get_array()) for ax in down.axes[:2])
     np.testing.assert_allclose(affine, correct, atol=1e-9)
 
@@ -231,3 +244,115 @@ def test_affine_and_correct_differ_without_colour():
 def test_console_script_is_declared():
     text = (Path(__file__).resolve().parent.parent / "pyproject.toml").read_text()
     assert 'interp-figures = "interp.figures:main"' in text
+
+
+# --- files: nothing half-done, whatever happens ----------------------------------------------
+
+
+def _folder_state(folder: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted(folder.iterdir())}
+
+
+def _run_cli(*args: str, **kwargs) -> subprocess.Popen:
+    return subprocess.Popen(
+        [sys.executable, "-m", "interp.figures", *args],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        **kwargs,
+    )
+
+
+def test_files_get_the_umask_permissions(tmp_path):
+    old = os.umask(0o022)
+    try:
+        assert figures.main(["--out", str(tmp_path), "--only", "depth", "--format", "svg"]) == 0
+    finally:
+        os.umask(old)
+    for path in tmp_path.iterdir():
+        assert path.stat().st_mode & 0o777 == 0o644, path.name
+
+
+@pytest.mark.parametrize("signum, status", [(2, 130), (15, 143)], ids=["SIGINT", "SIGTERM"])
+def test_a_signal_leaves_the_folder_as_it_was(tmp_path, signum, status):
+    (tmp_path / "the-problem.pdf").write_bytes(b"last week's handout")
+    (tmp_path / "notes.txt").write_text("mine")
+    before = _folder_state(tmp_path)
+    process = _run_cli("--out", str(tmp_path), "--dpi", "100")
+    first = process.stdout.readline()  # one figure staged: the run is half-way
+    assert first.startswith("the-problem")
+    process.send_signal(signum)
+    _, err = process.communicate(timeout=120)
+    assert process.returncode == status
+    assert "nothing was changed" in err and "Traceback" not in err
+    assert _folder_state(tmp_path) == before
+
+
+def test_a_file_too_large_fails_cleanly(tmp_path):
+    import resource
+
+    (tmp_path / "depth.pdf").write_bytes(b"old")
+    before = _folder_state(tmp_path)
+
+    def small_files() -> None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (20_000, 20_000))
+
+    process = _run_cli("--out", str(tmp_path), "--only", "depth", preexec_fn=small_files)
+    _, err = process.communicate(timeout=120)
+    assert process.returncode == 2
+    line = err.strip().splitlines()[-1]
+    assert line.startswith("interp-figures: error: cannot write " + str(tmp_path / "depth."))
+    assert "File too large" in line and "Traceback" not in err
+    assert _folder_state(tmp_path) == before
+
+
+@pytest.mark.parametrize(
+    "error",
+    [
+        OSError(28, "No space left on device"),
+        PermissionError(13, "Permission denied"),
+        OSError(30, "Read-only file system"),
+    ],
+    ids=["disk-full", "no-permission", "read-only"],
+)
+def test_file_system_errors_exit_2_and_change_nothing(tmp_path, monkeypatch, capsys, error):
+    (tmp_path / "depth.svg").write_text("old")
+    before = _folder_state(tmp_path)
+    real_savefig = matplotlib.figure.Figure.savefig
+    calls = []
+
+    def failing(self, name, **kwargs):  # the first file writes; the second meets the error
+        calls.append(name)
+        if len(calls) == 2:
+            raise error
+        return real_savefig(self, name, **kwargs)
+
+    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", failing)
+    assert figures.main(["--out", str(tmp_path), "--only", "depth", "--no-handout"]) == 2
+    err = capsys.readouterr().err
+    assert f"cannot write {tmp_path / 'depth.svg'}: {error.strerror}" in err
+    assert _folder_state(tmp_path) == before
+
+
+def test_out_below_a_file(tmp_path, capsys):
+    (tmp_path / "file").write_text("x")
+    assert figures.main(["--out", str(tmp_path / "file" / "sub"), "--only", "depth"]) == 2
+    assert "cannot create --out" in capsys.readouterr().err
+    assert (tmp_path / "file").read_text() == "x"
+
+
+def test_an_output_name_taken_by_a_folder(tmp_path, capsys):
+    (tmp_path / "depth.png").mkdir()
+    (tmp_path / "depth.svg").write_text("old")
+    before = sorted(p.name for p in tmp_path.iterdir())
+    assert figures.main(["--out", str(tmp_path), "--only", "depth", "--no-handout"]) == 2
+    assert "a folder of that name is in the way" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+    assert (tmp_path / "depth.svg").read_text() == "old"
+
+
+def test_params_file_not_utf8(tmp_path, capsys):
+    file = tmp_path / "params.json"
+    file.write_bytes(b'{"pitch": "\xff"}')
+    assert figures.main(["--out", str(tmp_path / "out"), "--params", str(file)]) == 2
+    assert "is not UTF-8 text" in capsys.readouterr().err

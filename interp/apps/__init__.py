@@ -1,8 +1,10 @@
-"""Live figures for the lessons: sliders wired to :mod:`interp.plots`, no math here.
+"""Live figures for the lessons: one control per parameter of a figure, no math here.
 
 Each function returns an app; show it by leaving it as the last expression of a cell. With
 ``%matplotlib widget`` (ipympl) the figure updates in place as the sliders move; without it,
-the same call shows a static figure that is redrawn after each change.
+the same call shows a static figure that is redrawn after each change. The figures themselves,
+their parameters and captions are in :mod:`interp.plots.registry`, which ``interp-figures``
+draws too.
 
 =====================  =====================================================================
 lesson                 apps
@@ -19,20 +21,69 @@ lesson                 apps
 :func:`presentation` makes later apps larger, for a projector.
 """
 
-from interp.apps._app import App, presentation
-from interp.apps.line import projecting_a_line, st_mapping, the_problem
-from interp.apps.scenes import (
-    approximations,
-    attributes,
-    barycentrics,
-    checkerboards,
-    clipping,
-    colour_quad,
-    depth,
-    uv_images,
-)
+from __future__ import annotations
 
-#: Every app, by name, for tests and the handout exporter.
+from interp.apps._app import App, presentation
+from interp.apps._drag import DragEndpoints
+from interp.plots import registry
+
+
+def the_problem() -> App:
+    """Lesson 1's app: drag A and B, change the image-plane distance d."""
+    return DragEndpoints(registry.TheProblem)
+
+
+def projecting_a_line() -> App:
+    """Lesson 2's app: top view, attribute along the image, and s-t curve, linked."""
+    return DragEndpoints(registry.ProjectingALine)
+
+
+def st_mapping() -> App:
+    """Lesson 3's app: the s-t curves for a depth ratio, and the gap's peak."""
+    return App(registry.STMapping)
+
+
+def depth() -> App:
+    """Lesson 4's app: depth across the screen, and the depth buffer's precision."""
+    return App(registry.Depth)
+
+
+def attributes() -> App:
+    """Lesson 5's app: right and wrong interpolation along a line; the clip vertex."""
+    return App(registry.Attributes)
+
+
+def colour_quad() -> App:
+    """Lesson 5's app: a colour gradient across a quad, affine and perspective-correct."""
+    return App(registry.ColourQuad)
+
+
+def checkerboards() -> App:
+    """Lesson 6's app: affine beside perspective-correct, and the error in texels."""
+    return App(registry.Checkerboards)
+
+
+def uv_images() -> App:
+    """Lesson 6's app: u and v as images."""
+    return App(registry.UVImagesFigure)
+
+
+def barycentrics() -> App:
+    """Lesson 7's app: one triangle coloured by its barycentrics, screen-space and clip-space."""
+    return App(registry.Barycentrics)
+
+
+def clipping() -> App:
+    """Lesson 7's app: near-plane clipping as the camera moves through the plane."""
+    return App(registry.Clipping)
+
+
+def approximations() -> App:
+    """Lesson 7's app: the approximation lab."""
+    return App(registry.Approximations)
+
+
+#: Every app, by name (the figure's name with underscores), for tests and notebooks.
 ALL = {
     "the_problem": the_problem,
     "projecting_a_line": projecting_a_line,

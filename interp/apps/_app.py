@@ -1,8 +1,9 @@
 """The machinery every live figure shares: one figure, its controls, updates in place.
 
-An app creates its figure once, under ``plt.ioff()`` and the package style, and never rebuilds
-it: a change of any control calls the app's ``draw(**values)``, which calls the plots'
-``update``, and then the canvas redraws.
+An app creates its figure once, under ``plt.ioff()`` and the package style, from a lesson
+figure of :mod:`interp.plots.registry`, and never rebuilds it: a change of any control calls
+the figure's ``update(**values)``, and then the canvas redraws. The app holds no math and no
+layout of its own: one control per parameter, with the parameter's range and label.
 
 - With ipympl (``%matplotlib widget``) the canvas is itself a widget: the app shows the
   controls beside it and redraws with ``draw_idle``.
@@ -14,17 +15,18 @@ it: a change of any control calls the app's ``draw(**values)``, which calls the 
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 
 import ipywidgets as widgets
 import matplotlib.pyplot as plt
 import numpy as np
 from IPython.display import display
-from matplotlib.figure import Figure
 
 from interp._allocator import keep_freed_memory
 from interp.plots import styled
+from interp.plots.params import Param
+from interp.plots.registry import LessonFigure
 
 #: Presentation mode: larger fonts and controls for a projector (see :func:`presentation`);
 #: also on when the environment variable INTERP_PRESENTATION is 1 (``make present`` sets it).
@@ -46,51 +48,49 @@ MAX_WIDTH = 9.5
 
 
 class App:
-    """A figure with its controls.
+    """A lesson figure with one control per parameter.
 
-    Subclasses build their plots on ``self.figure`` in ``__init__``, pass their controls to
-    ``super().__init__`` and implement ``draw(**values)``.
+    Parameters
+    ----------
+    figure_class : type of LessonFigure
+        From :data:`interp.plots.registry.FIGURES`: it says which parameters there are, their
+        ranges and labels, and how to draw.
+
+    Examples
+    --------
+    >>> from interp.plots.registry import STMapping
+    >>> app = App(STMapping)
+    >>> app.set(w2=9.0)
+    >>> app.plot.gap.derived
+    (0.75, 0.5)
     """
 
-    def __init__(
-        self,
-        controls: dict[str, widgets.ValueWidget],
-        figsize: tuple[float, float],
-        build: Callable[[Figure], None],
-    ) -> None:
+    def __init__(self, figure_class: type[LessonFigure]) -> None:
         keep_freed_memory()  # sliders feel live: numpy's temporaries are recycled
-        if figsize[0] > MAX_WIDTH:
-            raise ValueError(f"figsize width must be at most {MAX_WIDTH} in, got {figsize[0]}")
+        width, height = figure_class.size
+        if width > MAX_WIDTH:
+            raise ValueError(f"figure width must be at most {MAX_WIDTH} in, got {width}")
         scale = 1.5 if _PRESENTATION["on"] else 1.0
-        context = {
-            "font.size": 9 * scale,
-            "axes.titlesize": 10 * scale,
-            "axes.labelsize": 9 * scale,
-            "legend.fontsize": 8 * scale,
-            "xtick.labelsize": 8 * scale,
-            "ytick.labelsize": 8 * scale,
-        }
-        with styled(), plt.rc_context(context), plt.ioff():
-            self.figure = plt.figure(figsize=(figsize[0] * scale, figsize[1] * scale))
-            build(self.figure)
-        self.controls = controls
-        self.draw(**self.values)
+        self.controls = {name: control(param) for name, param in figure_class.PARAMS.items()}
+        with styled(), plt.rc_context({"font.size": 9 * scale}), plt.ioff():
+            self.figure = plt.figure(figsize=(width * scale, height * scale))
+            self.plot = figure_class(self.figure, **self.values)
         # Lay the figure out once, then freeze it: constrained layout would otherwise redo its
         # work (about half of a redraw) on every slider step, for a figure whose shape never
         # changes.
         self.figure.get_layout_engine().execute(self.figure)
         self.figure.set_layout_engine("none")
-        for control in controls.values():
+        for widget in self.controls.values():
             if scale > 1:
-                control.layout.width = "420px"
-                control.style.font_size = "18px"
-            control.observe(self._changed, names="value")
+                widget.layout.width = "420px"
+                widget.style.font_size = "18px"
+            widget.observe(self._changed, names="value")
         self._handle = None  # the figure is drawn already; displaying it shows that drawing
 
     @property
     def values(self) -> dict[str, object]:
         """The controls' current values, by name."""
-        return {name: control.value for name, control in self.controls.items()}
+        return {name: widget.value for name, widget in self.controls.items()}
 
     def set(self, **values: object) -> None:
         """Set several controls at once and redraw once (as a slider drag does per step)."""
@@ -102,12 +102,9 @@ class App:
                 self.controls[name].value = value
         self.refresh()
 
-    def draw(self, **values: object) -> None:  # pragma: no cover - every app overrides it
-        raise NotImplementedError
-
     def refresh(self) -> None:
         """Draw with the controls' values and show the result."""
-        self.draw(**self.values)
+        self.plot.update(**self.values)
         if self.live:
             self.figure.canvas.draw_idle()
         elif self._handle is not None:
@@ -153,6 +150,23 @@ class App:
     def _changed(self, change: dict) -> None:
         if self._holding_depth == 0:
             self.refresh()
+
+
+def control(param: Param) -> widgets.ValueWidget:
+    """The widget for one parameter: a drop-down for choices, else a slider."""
+    if param.options is not None:
+        return choice(str(param.default), param.options, param.label)
+    if param.kind is int:
+        return int_slider(int(param.default), int(param.low), int(param.high), param.label)
+    return slider(
+        float(param.default),
+        float(param.low),
+        float(param.high),
+        float(param.step),
+        param.label,
+        log=param.log,
+        readout_format=param.fmt,
+    )
 
 
 def slider(

@@ -7,12 +7,13 @@ from matplotlib.axes import Axes
 
 from interp import lerp, mistakes
 from interp.camera import Camera
+from interp.plots._base import Plot
 from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery
 from interp.raster import rasterize
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
 
 
-class MistakesAlongALine:
+class MistakesAlongALine(Plot):
     """An attribute along the image of a segment: right, affine, and two classic mistakes.
 
     Examples
@@ -35,7 +36,6 @@ class MistakesAlongALine:
         points: int = 101,
     ) -> None:
         self.ax = ax
-        self.params = {"a1": a1, "a2": a2, "w1": w1, "w2": w2, "near": near, "far": far}
         self.s = np.linspace(0, 1, points)
         every = markevery(points)
         styles = {
@@ -52,11 +52,10 @@ class MistakesAlongALine:
         ax.set_xlabel("screen parameter s")
         ax.set_ylabel("attribute")
         ax.legend(loc="upper left")
-        self.update()
+        super().__init__(a1=a1, a2=a2, w1=w1, w2=w2, near=near, far=far)
 
-    def update(self, **params: float) -> None:
-        """Redraw for new ``a1``, ``a2``, ``w1``, ``w2``, ``near`` or ``far``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``a1``, ``a2``, ``w1``, ``w2``, ``near`` and ``far``."""
         p, s = self.params, self.s
         curves = {
             "perspective-correct": lerp.lerp_perspective(p["a1"], p["a2"], p["w1"], p["w2"], s),
@@ -79,7 +78,7 @@ class MistakesAlongALine:
         fit_y(self.ax, *curves.values())
 
 
-class ClipVertexMistake:
+class ClipVertexMistake(Plot):
     """A segment from A (in front) to B (behind the near plane), clipped to A-C at the near
     plane: the attribute along the image of A-C when C gets its own attribute, and when it
     wrongly keeps B's.
@@ -103,7 +102,6 @@ class ClipVertexMistake:
         points: int = 101,
     ) -> None:
         self.ax = ax
-        self.params = {"a1": a1, "a2": a2, "w1": w1, "w2": w2, "near": near}
         self.s = np.linspace(0, 1, points)
         every = markevery(points)
         (self.right,) = ax.plot(
@@ -116,11 +114,10 @@ class ClipVertexMistake:
         ax.set_xlabel("s from A to C (C on the near plane)")
         ax.set_ylabel("attribute")
         ax.legend(loc="upper left")
-        self.update()
+        super().__init__(a1=a1, a2=a2, w1=w1, w2=w2, near=near)
 
-    def update(self, **params: float) -> None:
-        """Redraw for new ``a1``, ``a2``, ``w1`` (> near), ``w2`` (< near) or ``near``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``a1``, ``a2``, ``w1`` (> near), ``w2`` (< near) and ``near``."""
         p, s = self.params, self.s
         a_c = mistakes.clip_vertex_attribute(p["a1"], p["a2"], p["w1"], p["w2"], p["near"])
         self.right.set_data(s, lerp.lerp_perspective(p["a1"], a_c, p["w1"], p["near"], s))
@@ -133,11 +130,13 @@ class ClipVertexMistake:
         fit_y(self.ax, p["a1"], p["a2"])
 
 
-#: Red, green and blue at the corners of the ground plane's first triangle.
-CORNER_COLOURS = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 1.0, 0.0]])
+#: Colours of the ground quad's corners (u, v) = (0, 0), (1, 0), (0, 1), (1, 1): red, green,
+#: yellow and blue, so that its first triangle, corners 0, 1 and 3, is red, green and blue and its
+#: colour is its barycentric coordinates.
+CORNER_COLOURS = np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0], [0.0, 0.0, 1.0]])
 
 
-class ColourTriangle:
+class ColourTriangle(Plot):
     """A colour gradient across a ground-plane quad, drawn with one interpolation mode.
 
     Examples
@@ -158,21 +157,19 @@ class ColourTriangle:
         whole_quad: bool = True,
     ) -> None:
         self.ax = ax
-        self.camera = camera or LESSON_CAMERA
-        self.mode, self.width, self.height = mode, width, height
+        self.width, self.height = width, height
         self.whole_quad = whole_quad  # False: one triangle, its colours its barycentrics
         self.image = ax.imshow(np.zeros((height, width, 3)), interpolation="nearest")
         ax.set_axis_off()
-        self.update()
+        super().__init__(camera=camera or LESSON_CAMERA, mode=mode)
 
-    def update(self, camera: Camera | None = None, mode: str | None = None) -> None:
-        """Redraw for a new ``camera`` or ``mode``."""
-        self.camera = camera or self.camera
-        self.mode = mode or self.mode
-        scene = ground_plane(self.camera.fitted(self.width, self.height), LESSON_SIZE, quads=1)
+    def redraw(self) -> None:
+        """Draw for the current ``camera`` and ``mode``."""
+        camera, mode = self.params["camera"], str(self.params["mode"])
+        scene = ground_plane(camera.fitted(self.width, self.height), LESSON_SIZE, quads=1)
         triangles = scene.triangles if self.whole_quad else scene.triangles[:1]
         colours, covered = rasterize(
-            scene.clip, CORNER_COLOURS, triangles, self.width, self.height, self.mode
+            scene.clip, CORNER_COLOURS, triangles, self.width, self.height, mode
         )
         self.image.set_data(np.where(covered[..., None], np.clip(colours, 0, 1), 1.0))
-        self.ax.set_title(self.mode, fontsize=9)
+        self.ax.set_title(mode)

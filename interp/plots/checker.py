@@ -8,11 +8,12 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from interp.camera import Camera
+from interp.plots._base import Plot
 from interp.plots._style import bare
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, CheckerViews, checker_views, ground_plane
 
 
-class CheckerPanels:
+class CheckerPanels(Plot):
     """Affine | perspective-correct | ``|Δ(u, v)|`` in texels, for one camera.
 
     Parameters
@@ -53,16 +54,6 @@ class CheckerPanels:
         span: int = 16,
     ) -> None:
         self.axes = list(axes)
-        self.params = {
-            "camera": camera or LESSON_CAMERA,
-            "frequency": frequency,
-            "width": width,
-            "height": height,
-            "quads": quads,
-            "filtered": filtered,
-            "mode": mode,
-            "span": span,
-        }
         blank = np.zeros((height, width))
         grey = {"cmap": "gray", "vmin": 0, "vmax": 1}
         self.approximate = self.axes[0].imshow(blank, **grey)
@@ -71,16 +62,24 @@ class CheckerPanels:
         for ax, title in zip(
             self.axes, ("affine", "perspective-correct", "|Δ(u, v)| in texels"), strict=True
         ):
-            ax.set_title(title, fontsize=9)
+            ax.set_title(title)
             bare(ax)
         figure = self.axes[2].get_figure(root=False)  # the subfigure, if drawn in one
         self.colorbar = figure.colorbar(self.error, ax=self.axes[2], shrink=0.8)
-        self.update()
+        super().__init__(
+            camera=camera or LESSON_CAMERA,
+            frequency=frequency,
+            width=width,
+            height=height,
+            quads=quads,
+            filtered=filtered,
+            mode=mode,
+            span=span,
+        )
 
-    def update(self, **params: object) -> None:
-        """Redraw for a new ``camera``, ``frequency``, ``width``, ``height``, ``quads``,
-        ``filtered``, ``mode`` (of the left panel) or ``span``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``camera``, ``frequency``, ``width``, ``height``, ``quads``,
+        ``filtered``, ``mode`` (of the left panel) and ``span``."""
         p = self.params
         camera = p["camera"].fitted(int(p["width"]), int(p["height"]))
         scene = ground_plane(camera, size=LESSON_SIZE, quads=int(p["quads"]))
@@ -102,14 +101,12 @@ class CheckerPanels:
             image.set_data(data)
             image.set_extent(extent)
         mode = str(p["mode"])
-        self.axes[0].set_title(
-            mode if mode != "subdivided" else f"exact every {p['span']} px", fontsize=9
-        )
+        self.axes[0].set_title(mode if mode != "subdivided" else f"exact every {p['span']} px")
         worst = float(self.views.error.max())
-        self.axes[2].set_title(f"|Δ(u, v)| in texels (max {worst:.2f})", fontsize=9)
+        self.axes[2].set_title(f"|Δ(u, v)| in texels (max {worst:.2f})")
 
 
-class UVImages:
+class UVImages(Plot):
     """The interpolated u and v as images, for one mode.
 
     Examples
@@ -130,23 +127,17 @@ class UVImages:
         quads: int = 1,
     ) -> None:
         self.axes = list(axes)
-        self.params = {
-            "camera": camera or LESSON_CAMERA,
-            "mode": mode,
-            "width": width,
-            "height": height,
-            "quads": quads,
-        }
         self.images = [
             ax.imshow(np.zeros((height, width)), cmap="cividis", vmin=0, vmax=1) for ax in self.axes
         ]
         for ax in self.axes:
             bare(ax)
-        self.update()
+        super().__init__(
+            camera=camera or LESSON_CAMERA, mode=mode, width=width, height=height, quads=quads
+        )
 
-    def update(self, **params: object) -> None:
-        """Redraw for a new ``camera``, ``mode``, ``width``, ``height`` or ``quads``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``camera``, ``mode``, ``width``, ``height`` and ``quads``."""
         p = self.params
         camera = p["camera"].fitted(int(p["width"]), int(p["height"]))
         scene = ground_plane(camera, size=LESSON_SIZE, quads=int(p["quads"]))
@@ -156,4 +147,4 @@ class UVImages:
         for k, (image, ax) in enumerate(zip(self.images, self.axes, strict=True)):
             image.set_data(np.ma.masked_array(uv[..., k], mask=~views.covered))
             image.set_extent((-0.5, int(p["width"]) - 0.5, int(p["height"]) - 0.5, -0.5))
-            ax.set_title(f"{'uv'[k]} ({mode})", fontsize=9)
+            ax.set_title(f"{'uv'[k]} ({mode})")

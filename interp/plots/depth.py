@@ -6,6 +6,7 @@ import numpy as np
 from matplotlib.axes import Axes
 
 from interp import depth, lerp
+from interp.plots._base import Plot
 from interp.plots._style import CORRECT, OTHERS, markevery
 
 
@@ -14,7 +15,7 @@ def _normalized(y: np.ndarray) -> np.ndarray:
     return (y - y[0]) / span if span != 0 else np.zeros_like(y)
 
 
-class DepthAcross:
+class DepthAcross(Plot):
     """Along the image of a segment from depth ``w1`` to ``w2``: view depth w, ``1/w`` and NDC z,
     each rescaled to run from 0 to 1. ``1/w`` and NDC z are straight lines (linear on the
     screen); w is not.
@@ -37,7 +38,6 @@ class DepthAcross:
         points: int = 101,
     ) -> None:
         self.ax = ax
-        self.params = {"w1": w1, "w2": w2, "near": near, "far": far}
         self.s = np.linspace(0, 1, points)
         every = markevery(points)
         self.curves = {
@@ -72,11 +72,10 @@ class DepthAcross:
         ax.set_xlabel("screen parameter s")
         ax.set_ylabel("rescaled to [0, 1]")
         ax.legend(loc="upper left")
-        self.update()
+        super().__init__(w1=w1, w2=w2, near=near, far=far)
 
-    def update(self, **params: float) -> None:
-        """Redraw for new ``w1``, ``w2``, ``near`` or ``far``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``w1``, ``w2``, ``near`` and ``far``."""
         p = self.params
         inverse_w = lerp.lerp_inverse_w(p["w1"], p["w2"], self.s)
         w = 1 / inverse_w
@@ -86,7 +85,7 @@ class DepthAcross:
         self.curves["NDC z"].set_data(self.s, _normalized(z))
 
 
-class DepthPrecision:
+class DepthPrecision(Plot):
     """The smallest depth difference a depth buffer notices, against depth, for three near
     planes: each tenfold smaller near plane makes every depth tenfold coarser.
 
@@ -107,7 +106,6 @@ class DepthPrecision:
         points: int = 200,
     ) -> None:
         self.ax = ax
-        self.params = {"near": near, "far": far, "buffer": buffer}
         self.points = points
         styles = [CORRECT, *OTHERS[:2]]
         self.lines = [
@@ -125,11 +123,10 @@ class DepthPrecision:
         ax.set_yscale("log")
         ax.set_xlabel("view depth w")
         ax.set_ylabel("smallest depth step the buffer resolves")
-        self.update()
+        super().__init__(near=near, far=far, buffer=buffer)
 
-    def update(self, **params: object) -> None:
-        """Redraw for new ``near``, ``far`` or ``buffer`` ("float32" or "fixed24")."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``near``, ``far`` and ``buffer`` ("float32" or "fixed24")."""
         near, far = float(self.params["near"]), float(self.params["far"])
         steps = []
         for line, factor in zip(self.lines, (1.0, 10.0, 0.1), strict=True):
@@ -146,5 +143,5 @@ class DepthPrecision:
         every = np.concatenate(steps)
         self.ax.set_xlim(near * 0.1, far)
         self.ax.set_ylim(every.min() / 2, every.max() * 2)
-        self.ax.set_title(f"{self.params['buffer']} depth buffer, far = {far:g}", fontsize=9)
+        self.ax.set_title(f"{self.params['buffer']} depth buffer, far = {far:g}")
         self.ax.legend(loc="upper left", fontsize="small")

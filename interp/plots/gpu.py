@@ -8,13 +8,14 @@ from matplotlib.collections import LineCollection
 
 from interp import approximation
 from interp.camera import Camera
+from interp.plots._base import Plot
 from interp.plots._style import AFFINE, CORRECT, bare
 from interp.raster import fragments, interpolate, viewport
 from interp.scenes import LESSON_SIZE, ground_plane
 from interp.texture import checkerboard
 
 
-class ClippingView:
+class ClippingView(Plot):
     """The ground plane drawn perspective-correctly, with the outline of every triangle that
     clipping made: watch new vertices appear as the camera nears the plane.
 
@@ -37,22 +38,20 @@ class ClippingView:
         frequency: float = 8,
     ) -> None:
         self.ax = ax
-        self.params = {
-            "camera": camera or Camera(height=0.3, pitch=15, distance=1.0),
-            "quads": quads,
-            "width": width,
-            "height": height,
-            "frequency": frequency,
-        }
         self.image = ax.imshow(np.zeros((height, width)), cmap="gray", vmin=0, vmax=1)
         self.outlines = LineCollection([], colors=CORRECT["color"], linewidths=1.0)
         ax.add_collection(self.outlines)
         bare(ax)
-        self.update()
+        super().__init__(
+            camera=camera or Camera(height=0.3, pitch=15, distance=1.0),
+            quads=quads,
+            width=width,
+            height=height,
+            frequency=frequency,
+        )
 
-    def update(self, **params: object) -> None:
-        """Redraw for a new ``camera``, ``quads``, ``width``, ``height`` or ``frequency``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``camera``, ``quads``, ``width``, ``height`` and ``frequency``."""
         p = self.params
         width, height = int(p["width"]), int(p["height"])
         camera = p["camera"].fitted(width, height)
@@ -78,16 +77,14 @@ class ClippingView:
         self.ax.set_ylim(height - 0.5, -0.5)
         visible = len(np.unique(frags.clipped.source))
         self.counts = {"pieces": len(frags.clipped), "visible triangles": visible}
-        self.ax.set_title(
-            f"{visible} triangles in view became {len(frags.clipped)} after clipping", fontsize=9
-        )
+        self.ax.set_title(f"{visible} triangles in view became {len(frags.clipped)} after clipping")
 
 
 #: The lab's camera: rolled, so that depth varies along image rows (see Camera's roll).
 LAB_CAMERA = Camera(height=1.0, pitch=15.0, yaw=0.0, distance=3.0, roll=30.0)
 
 
-class ApproximationLab:
+class ApproximationLab(Plot):
     """Mean error in texels against divides per pixel: Quake's spans against PlayStation-era
     tessellation, for one camera.
 
@@ -99,6 +96,9 @@ class ApproximationLab:
     (6, 6)
     """
 
+    #: The axes' ranges when there is nothing to plot.
+    EMPTY_X, EMPTY_Y = (1e-3, 1.0), (1e-3, 10.0)
+
     def __init__(
         self,
         ax: Axes,
@@ -108,12 +108,6 @@ class ApproximationLab:
         frequency: float = 8,
     ) -> None:
         self.ax = ax
-        self.params = {
-            "camera": camera or LAB_CAMERA,
-            "width": width,
-            "height": height,
-            "frequency": frequency,
-        }
         (self.spans,) = ax.plot([], [], **{**CORRECT, "label": "spans: exact every N pixels"})
         (self.tessellation,) = ax.plot(
             [], [], **{**AFFINE, "label": "tessellation: n x n quads, affine"}
@@ -124,11 +118,12 @@ class ApproximationLab:
         ax.set_xlabel("divides per pixel drawn")
         ax.set_ylabel("mean |Δ(u, v)| in texels")
         ax.legend(loc="upper right")
-        self.update()
+        super().__init__(
+            camera=camera or LAB_CAMERA, width=width, height=height, frequency=frequency
+        )
 
-    def update(self, **params: object) -> None:
-        """Redraw for a new ``camera``, ``width``, ``height`` or ``frequency``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``camera``, ``width``, ``height`` and ``frequency``."""
         p = self.params
         size = (int(p["width"]), int(p["height"]), float(p["frequency"]))
         spans = approximation.span_costs(p["camera"], *size)
@@ -152,7 +147,7 @@ class ApproximationLab:
                         (xi, yi),
                         xytext=(4, 2),
                         textcoords="offset points",
-                        fontsize=7,
+                        fontsize="x-small",
                         color=line.get_color(),
                     )
                 )
@@ -162,3 +157,8 @@ class ApproximationLab:
         if keep.any():
             self.ax.set_xlim(xs[keep].min() / 2, xs[keep].max() * 3)
             self.ax.set_ylim(ys[keep].min() / 3, ys[keep].max() * 3)
+            self.ax.set_title("")
+        else:  # nothing drawn, or nothing to correct: fixed axes, so history cannot show
+            self.ax.set_xlim(*self.EMPTY_X)
+            self.ax.set_ylim(*self.EMPTY_Y)
+            self.ax.set_title("no error to plot: the plane is out of view or exact")

@@ -12,6 +12,7 @@ from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 
 from interp import lerp
+from interp.plots._base import Plot
 from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery
 
 Point = tuple[float, float]
@@ -22,7 +23,7 @@ def _wx(point: np.ndarray) -> tuple[float, float]:
     return float(-point[1]), float(point[0])
 
 
-class LineView:
+class LineView(Plot):
     """Top view: the eye, the image plane, segment AB, and the rays that image it.
 
     Shows the midpoint M of AB and its image m, and the midpoint c of the image ab with the
@@ -60,7 +61,6 @@ class LineView:
         extent: tuple[float, float] = (10.0, 5.0),
     ) -> None:
         self.ax = ax
-        self.params = {"A": A, "B": B, "d": d, "samples": samples}
         w_max, x_max = extent
         ax.set_xlim(-0.3, w_max)
         ax.set_ylim(-x_max, x_max)
@@ -68,7 +68,7 @@ class LineView:
         ax.set_xlabel("depth w = -z")
         ax.set_ylabel("x")
         ax.plot([0], [0], marker=">", color="black", markersize=9, linestyle="none")
-        ax.annotate("eye", (0, 0), xytext=(-4, -12), textcoords="offset points", fontsize=8)
+        ax.annotate("eye", (0, 0), xytext=(-4, -12), textcoords="offset points", fontsize="small")
         (self.plane,) = ax.plot([], [], color="0.4", linewidth=2.5, solid_capstyle="butt")
         (self.segment,) = ax.plot([], [], color="black", linewidth=2)
         self.rays = [ax.plot([], [], color="0.6", linewidth=0.8)[0] for _ in range(2)]
@@ -95,7 +95,7 @@ class LineView:
                 (0, 0),
                 xytext=(6, 4) if name.isupper() else (-10, -3),
                 textcoords="offset points",
-                fontsize=9 if name.isupper() else 8,
+                fontsize="medium" if name.isupper() else "small",
             )
             for name in ("A", "B", "M", "C", "a", "b", "m", "c")
         }
@@ -103,11 +103,10 @@ class LineView:
             [], [], linestyle="none", marker="|", markersize=10, color="black"
         )
         self.points: dict[str, np.ndarray] = {}
-        self.update()
+        super().__init__(A=A, B=B, d=d, samples=samples)
 
-    def update(self, **params: object) -> None:
-        """Redraw for new ``A``, ``B``, ``d`` or ``samples``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``A``, ``B``, ``d`` and ``samples``."""
         A = np.asarray(self.params["A"], float)
         B = np.asarray(self.params["B"], float)
         d = float(self.params["d"])
@@ -163,7 +162,7 @@ class LineView:
         return best
 
 
-class ImageStrip:
+class ImageStrip(Plot):
     """An attribute along the image of AB: affine and perspective-correct, against s.
 
     ``a1`` at A and ``a2`` at B (an intensity, say). The affine one is a straight line; the
@@ -187,7 +186,6 @@ class ImageStrip:
         points: int = 101,
     ) -> None:
         self.ax = ax
-        self.params = {"w1": w1, "w2": w2, "a1": a1, "a2": a2}
         self.s = np.linspace(0, 1, points)
         every = markevery(points)
         (self.correct,) = ax.plot([], [], markevery=every, **CORRECT)
@@ -196,11 +194,10 @@ class ImageStrip:
         ax.set_xlabel("screen parameter s along the image ab")
         ax.set_ylabel("attribute (intensity)")
         ax.legend(loc="upper left")
-        self.update()
+        super().__init__(w1=w1, w2=w2, a1=a1, a2=a2)
 
-    def update(self, **params: float) -> None:
-        """Redraw for new ``w1``, ``w2``, ``a1`` or ``a2``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``w1``, ``w2``, ``a1`` and ``a2``."""
         p = self.params
         self.correct.set_data(
             self.s, lerp.lerp_perspective(p["a1"], p["a2"], p["w1"], p["w2"], self.s)
@@ -209,7 +206,7 @@ class ImageStrip:
         fit_y(self.ax, p["a1"], p["a2"])
 
 
-class STCurve:
+class STCurve(Plot):
     """The mapping from screen parameter s to object parameter t, with samples marked.
 
     Examples
@@ -224,7 +221,6 @@ class STCurve:
         self, ax: Axes, w1: float = 2.0, w2: float = 8.0, samples: int = 0, points: int = 201
     ) -> None:
         self.ax = ax
-        self.params = {"w1": w1, "w2": w2, "samples": samples}
         self.s = np.linspace(0, 1, points)
         ax.plot(
             [0, 1],
@@ -246,11 +242,10 @@ class STCurve:
         ax.set_xlabel("s (screen)")
         ax.set_ylabel("t (object)")
         ax.legend(loc="upper left")
-        self.update()
+        super().__init__(w1=w1, w2=w2, samples=samples)
 
-    def update(self, **params: float) -> None:
-        """Redraw for new ``w1``, ``w2`` or ``samples``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``w1``, ``w2`` and ``samples``."""
         w1, w2 = float(self.params["w1"]), float(self.params["w2"])
         self.curve.set_data(self.s, lerp.t_from_s(self.s, w1, w2))
         n = int(self.params["samples"])
@@ -258,7 +253,7 @@ class STCurve:
         self.samples.set_data(s, lerp.t_from_s(s, w1, w2) if n else [])
 
 
-class STFamily:
+class STFamily(Plot):
     """The family of s-t curves for depth ratios ``w2/w1``, the current one in bold.
 
     Examples
@@ -291,18 +286,15 @@ class STFamily:
         ax.set_aspect("equal", adjustable="box")
         ax.set_xlabel("s (screen)")
         ax.set_ylabel("t (object)")
-        ax.legend(loc="upper left", fontsize=7)
-        self.ratio = ratio
-        self.update()
+        ax.legend(loc="upper left", fontsize="x-small")
+        super().__init__(ratio=ratio)
 
-    def update(self, ratio: float | None = None) -> None:
-        """Redraw the bold curve for a new ``ratio`` = w2 / w1."""
-        if ratio is not None:
-            self.ratio = float(ratio)
-        self.current.set_data(self.s, lerp.t_from_s(self.s, 1.0, self.ratio))
+    def redraw(self) -> None:
+        """Draw the bold curve for the current ``ratio`` = w2 / w1."""
+        self.current.set_data(self.s, lerp.t_from_s(self.s, 1.0, float(self.params["ratio"])))
 
 
-class GapPlot:
+class GapPlot(Plot):
     """``|t - s|`` against s, with the derived peak and the sampled maximum marked.
 
     Examples
@@ -315,7 +307,6 @@ class GapPlot:
 
     def __init__(self, ax: Axes, w1: float = 2.0, w2: float = 8.0, points: int = 2001) -> None:
         self.ax = ax
-        self.params = {"w1": w1, "w2": w2}
         self.s = np.linspace(0, 1, points)
         (self.curve,) = ax.plot([], [], color=CORRECT["color"], label="|t - s|")
         (self.peak,) = ax.plot(
@@ -341,11 +332,10 @@ class GapPlot:
         ax.set_xlabel("s (screen)")
         ax.set_ylabel("|t - s|")
         ax.legend(loc="lower center")
-        self.update()
+        super().__init__(w1=w1, w2=w2)
 
-    def update(self, **params: float) -> None:
-        """Redraw for new ``w1`` or ``w2``."""
-        self.params.update(params)
+    def redraw(self) -> None:
+        """Draw for the current ``w1`` and ``w2``."""
         w1, w2 = float(self.params["w1"]), float(self.params["w2"])
         gap = np.abs(lerp.t_from_s(self.s, w1, w2) - self.s)
         self.curve.set_data(self.s, gap)
@@ -358,5 +348,5 @@ class GapPlot:
         self.ax.set_title(
             f"derived: s* = √w2/(√w1+√w2) = {self.derived[0]:.3f}, gap {self.derived[1]:.3f}\n"
             f"sampled: s = {self.measured[0]:.3f}, gap {self.measured[1]:.3f}",
-            fontsize=8,
+            fontsize="small",
         )
