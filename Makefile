@@ -25,8 +25,10 @@ $(STAMP): pyproject.toml | $(BIN)/python
 lessons: $(STAMP)
 	$(BIN)/jupyter lab --notebook-dir=lessons $(LAB_ARGS)
 
+# Voilà through interp.classroom: kernels of closed tabs are shut down after 5 idle minutes, and
+# at most 30 run at once (python -m interp.classroom --help).
 present: $(STAMP)
-	INTERP_PRESENTATION=1 $(BIN)/voila lessons
+	INTERP_PRESENTATION=1 $(BIN)/python -m interp.classroom lessons
 
 lint: $(STAMP)
 	$(BIN)/ruff check --no-cache interp tests conftest.py

@@ -8,11 +8,16 @@ from __future__ import annotations
 
 import io
 import os
+import shutil
+import subprocess
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
-from browser import ARTIFACTS, CHROMIUM, SCREENSHOTS, chromium, server
+from browser import ARTIFACTS, CHROMIUM, ROOT, SCREENSHOTS, chromium, free_port, server
+from browser import _wait_for as wait_for_server
 from PIL import Image
 
 pytestmark = pytest.mark.browser
@@ -162,11 +167,11 @@ def test_dragging_an_endpoint_moves_the_linked_panels(lab, page):
     before = wait_until_drawn(canvas)
     # Where A is drawn: the same app, laid out the same way, tells us (figure pixels, y up).
     app = apps.projecting_a_line()
-    a_w, a_x = -app.view.points["A"][1], app.view.points["A"][0]
-    px, py = app.view.ax.transData.transform((a_w, a_x))
+    a_w, a_x = -app.plot.view.points["A"][1], app.plot.view.points["A"][0]
+    px, py = app.plot.view.ax.transData.transform((a_w, a_x))
     height = app.figure.bbox.height
     target_w, target_x = 5.0, 3.0
-    tx, ty = app.view.ax.transData.transform((target_w, target_x))
+    tx, ty = app.plot.view.ax.transData.transform((target_w, target_x))
     box = canvas.bounding_box()
     readout = slider(page, "A: depth w").locator(".widget-readout")
     start = readout.inner_text()
@@ -214,3 +219,81 @@ def test_voila_shows_figures_and_sliders_without_code(tmp_path, page):
         wait_until_changed(canvas, before)
         save_screenshot(page, "voila")
         assert not page.console_errors, page.console_errors
+
+
+def kernel_processes(pid: int) -> int:
+    """How many ipykernel processes the server with process id ``pid`` has started."""
+    count = 0
+    for entry in Path("/proc").iterdir():
+        if not entry.name.isdigit():
+            continue
+        try:
+            stat = (entry / "stat").read_text()
+            cmdline = (entry / "cmdline").read_bytes()
+        except OSError:
+            continue
+        parent = int(stat.rsplit(")", 1)[1].split()[1])
+        if parent == pid and b"ipykernel" in cmdline:
+            count += 1
+    return count
+
+
+def wait_for_kernels(pid: int, condition, seconds: float = 60.0) -> int:
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        count = kernel_processes(pid)
+        if condition(count):
+            return count
+        time.sleep(0.5)
+    raise AssertionError(f"kernel count stayed at {kernel_processes(pid)}")
+
+
+def test_classroom_server_culls_closed_pages_and_caps_kernels(tmp_path, browser):
+    """`make present` runs Voilà through interp.classroom: a closed tab's kernel goes away, and
+    no more than --max-kernels run at once (Voilà alone keeps one per page ever opened)."""
+    lessons = tmp_path / "lessons"
+    shutil.copytree(ROOT / "lessons", lessons)
+    port = free_port()
+    command = [
+        sys.executable, "-m", "interp.classroom", "--idle", "3", "--interval", "1",
+        "--max-kernels", "2", "--no-browser", f"--port={port}", "--Voila.ip=127.0.0.1",
+        str(lessons / "03_the_st_mapping.ipynb"),
+    ]  # fmt: skip
+    env = {**os.environ, "JUPYTER_CONFIG_DIR": str(tmp_path / "config")}
+    env.pop("MPLBACKEND", None)
+    log = tmp_path / "voila.log"
+    with log.open("w") as out:
+        process = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT)
+    url = f"http://127.0.0.1:{port}/"
+    try:
+        wait_for_server(url, process, log)
+        opened = []
+        for _ in range(2):  # two students keep their pages open: two kernels
+            page = browser.new_page()
+            page.goto(url, timeout=120_000)
+            page.locator(".jupyter-matplotlib-canvas-div canvas").first.wait_for(timeout=120_000)
+            opened.append(page)
+        assert kernel_processes(process.pid) == 2
+        # A third page would pass the cap, and every kernel has a page: refused, not started.
+        third = browser.new_page()
+        response = third.goto(url, timeout=120_000)
+        assert response.status == 503 and "The server is full (2 pages are open)" in third.content()
+        third.close()
+        assert kernel_processes(process.pid) == 2
+        for page in opened:  # the students close their tabs
+            page.close()
+        wait_for_kernels(process.pid, lambda n: n == 0, seconds=60)
+        # Pages opened and closed one after another never leave more than the cap behind.
+        for _ in range(3):
+            page = browser.new_page()
+            page.goto(url, timeout=120_000)
+            page.locator(".jupyter-matplotlib-canvas-div canvas").first.wait_for(timeout=120_000)
+            page.close()
+            assert kernel_processes(process.pid) <= 2
+        wait_for_kernels(process.pid, lambda n: n == 0, seconds=60)
+    finally:
+        process.terminate()
+        try:
+            process.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            process.kill()
