@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import interp
+from interp import raster
 from interp.raster import SUBPIXELS
 
 from helpers import random_scene
@@ -138,6 +139,25 @@ def _inside_polygon(ring, width, height):
         )
         inside |= (s1 >= 0) & (s2 > 0) & (s3 >= 0)
     return inside & ((cols != centre[0]) | (rows != centre[1]))
+
+
+@pytest.mark.parametrize("chunk", [1, 37, 300])
+def test_depth_test_in_small_chunks(monkeypatch, chunk):
+    # The depth test handles CHUNK fragments at a time (4 million by default, more than any
+    # other test draws). With small chunks, overlapping triangles put the fragments competing
+    # for one pixel into different chunks: the result must be the reference's, and identical
+    # to one chunk's.
+    clip, attributes, triangles = random_scene(np.random.default_rng(21), 30, behind=True)
+    whole = interp.fragments(clip, attributes, triangles, 48, 36)
+    monkeypatch.setattr(raster, "CHUNK", chunk)
+    chunked = interp.fragments(clip, attributes, triangles, 48, 36)
+    drawn = sum(interp.fragments(clip, attributes, [t], 48, 36).covered.sum() for t in triangles)
+    assert drawn > 10 * chunk, "the fragments before the depth test should take many chunks"
+    np.testing.assert_array_equal(chunked.pixel, whole.pixel)
+    np.testing.assert_array_equal(chunked.triangle, whole.triangle)
+    np.testing.assert_array_equal(chunked.barycentric, whole.barycentric)
+    checked, _ = compare(clip, attributes, triangles, 48, 36, "perspective")
+    assert checked > 300
 
 
 def test_depth_test_nearest_wins_and_first_wins_ties():
