@@ -57,22 +57,26 @@ def test_exact_on_the_subpixel_grid(mode, seed):
     assert checked > 100 and ambiguous < 0.1 * 40 * 30
 
 
+@pytest.mark.parametrize("mode", ["perspective", "affine"])
 @pytest.mark.parametrize("seed", range(8))
-def test_random_scenes_with_clipping(seed):
+def test_random_scenes_with_clipping(seed, mode):
+    # In affine mode this checks the noperspective values clipping gives its new vertices:
+    # the reference has no clipper, only the unclipped triangle's screen-space barycentrics.
     rng = np.random.default_rng(100 + seed)
     clip, attributes, triangles = random_scene(rng, 8, behind=True)
     assert np.any(clip[:, 2] < -clip[:, 3]), "the scene should need near-plane clipping"
-    checked, ambiguous = compare(clip, attributes, triangles, 48, 36, "perspective")
+    checked, ambiguous = compare(clip, attributes, triangles, 48, 36, mode)
     assert checked > 200 and ambiguous < 0.15 * 48 * 36
 
 
-def test_camera_inside_a_plane_and_vertices_behind_it():
+@pytest.mark.parametrize("mode", ["perspective", "affine"])
+def test_camera_inside_a_plane_and_vertices_behind_it(mode):
     # A ground plane seen from 5 mm above: vertices behind the camera, triangles through the
     # near plane. Only clipping in clip space makes this right.
     camera = interp.Camera(height=0.005, pitch=30, distance=0.0, near=0.002)
     scene = interp.ground_plane(camera, quads=4)
     assert np.any(scene.clip[:, 3] < 0) and np.any(scene.clip[:, 2] < -scene.clip[:, 3])
-    checked, _ = compare(scene.clip, scene.uv, scene.triangles, 40, 40, "perspective")
+    checked, _ = compare(scene.clip, scene.uv, scene.triangles, 40, 40, mode)
     assert checked > 600
 
 
