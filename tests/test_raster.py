@@ -126,6 +126,30 @@ def test_shared_edges_are_drawn_exactly_once(rng):
         assert union[inside].all(), "a pixel inside the fan was skipped"
 
 
+@pytest.mark.parametrize("flip", [False, True], ids=["ccw", "cw"])
+@pytest.mark.parametrize("diagonal", ["/", "\\"])
+def test_fill_rule_owns_left_and_bottom_edges(diagonal, flip):
+    # Derived by hand, no OpenGL needed. A square with corners on the pixel centres (0.5, 0.5)
+    # and (3.5, 3.5) (window coordinates, y up), cut along a diagonal into two triangles.
+    # Mesa's rule gives a triangle the centres on its left edges and horizontal bottom edges,
+    # so the square's left and bottom sides are drawn and its right and top sides are not:
+    # exactly the 3 x 3 centres (0.5 .. 2.5)^2, each once. With the triangle
+    # (0.5, 0.5), (3.5, 0.5), (0.5, 3.5) on its own: the centres on its left and bottom edges,
+    # none on its diagonal x + y = 4.
+    corners = np.array([[0.5, 0.5], [3.5, 0.5], [3.5, 3.5], [0.5, 3.5]])
+    halves = [[0, 1, 3], [1, 2, 3]] if diagonal == "/" else [[0, 1, 2], [0, 2, 3]]
+    if flip:
+        halves = [t[::-1] for t in halves]
+    clip = np.hstack([corners / 4 * 2 - 1, np.zeros((4, 1)), np.ones((4, 1))])
+    covers = [interp.rasterize(clip, np.zeros((4, 1)), [t], 4, 4)[1] for t in halves]
+    expected = np.zeros((4, 4), bool)
+    expected[1:, :3] = True  # window rows y = 0, 1, 2 are image rows 3, 2, 1
+    np.testing.assert_array_equal(covers[0].astype(int) + covers[1], expected)
+    if diagonal == "/":
+        lower_left = [[0, 0, 0, 0], [1, 0, 0, 0], [1, 1, 0, 0], [1, 1, 1, 0]]
+        np.testing.assert_array_equal(covers[0], np.array(lower_left, bool))
+
+
 def _inside_polygon(ring, width, height):
     """Pixel centres strictly inside a convex-or-star polygon around the image centre."""
     cols, rows = np.meshgrid(np.arange(width) + 0.5, height - (np.arange(height) + 0.5))
