@@ -231,9 +231,11 @@ def edge_function(x0: Number, y0: Number, x1: Number, y1: Number, px: Number, py
 def owns_edge(x0: int, y0: int, x1: int, y1: int) -> bool:
     """Mesa's fill rule, for an edge of a counter-clockwise triangle from corner 0 to corner 1.
 
-    The inside is left of every edge. An edge going down has the inside to its right: it is a
-    *left* edge. A horizontal edge going right has the inside above: a *bottom* edge. The
-    triangle owns the centres on those; its neighbour across them does not.
+    Walking along the edges of a counter-clockwise triangle (y up), the inside is on your left.
+    Walking down, your left is the screen's +x: the triangle lies right of the edge, which is
+    one of its *left* edges. Walking right along a horizontal edge, your left is +y: the
+    triangle lies above, and the edge is its *bottom* edge. The triangle owns the centres on
+    those; its neighbour across them does not.
 
     Examples
     --------
