@@ -28,7 +28,10 @@ def keep_freed_memory() -> bool:
 
     Examples
     --------
-    >>> keep_freed_memory() in (True, False)
+    glibc accepts both settings; with any other C library (macOS, musl) the answer is False:
+
+    >>> import platform
+    >>> keep_freed_memory() == (platform.libc_ver()[0] == "glibc")
     True
     """
     if not sys.platform.startswith("linux"):

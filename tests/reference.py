@@ -9,7 +9,11 @@ and inside the depth range if ``-P.w <= P.z <= P.w``. The nearest (smallest ``P.
 Note ``P.z / P.w = sum(b_i z_i / w_i)``: NDC depth is linear on the screen, as OpenGL has it.
 
 Perspective-correct attributes are ``sum(l_i a_i)``: the attribute of that 3D point. Affine
-(``noperspective``) attributes use the screen-space barycentrics ``b_i = l_i w_i / P.w``.
+(``noperspective``) attributes use the screen-space barycentrics ``b_i = l_i w_i / P.w``: they
+sum to 1 and place the pixel at ``sum(b_i x_i / w_i)``, so they are linear on the screen, also
+for a triangle with a vertex behind the eye (``w_i < 0``, projected through the eye). That is
+what clipping must reproduce: a new vertex on an edge at clip parameter t takes the screen
+parameter ``s_from_t(t, w_in, w_out)``.
 """
 
 from __future__ import annotations

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import interp
+from interp import raster
 from interp.raster import SUBPIXELS
 
 from helpers import random_scene
@@ -56,22 +57,26 @@ def test_exact_on_the_subpixel_grid(mode, seed):
     assert checked > 100 and ambiguous < 0.1 * 40 * 30
 
 
+@pytest.mark.parametrize("mode", ["perspective", "affine"])
 @pytest.mark.parametrize("seed", range(8))
-def test_random_scenes_with_clipping(seed):
+def test_random_scenes_with_clipping(seed, mode):
+    # In affine mode this checks the noperspective values clipping gives its new vertices:
+    # the reference has no clipper, only the unclipped triangle's screen-space barycentrics.
     rng = np.random.default_rng(100 + seed)
     clip, attributes, triangles = random_scene(rng, 8, behind=True)
     assert np.any(clip[:, 2] < -clip[:, 3]), "the scene should need near-plane clipping"
-    checked, ambiguous = compare(clip, attributes, triangles, 48, 36, "perspective")
+    checked, ambiguous = compare(clip, attributes, triangles, 48, 36, mode)
     assert checked > 200 and ambiguous < 0.15 * 48 * 36
 
 
-def test_camera_inside_a_plane_and_vertices_behind_it():
+@pytest.mark.parametrize("mode", ["perspective", "affine"])
+def test_camera_inside_a_plane_and_vertices_behind_it(mode):
     # A ground plane seen from 5 mm above: vertices behind the camera, triangles through the
     # near plane. Only clipping in clip space makes this right.
     camera = interp.Camera(height=0.005, pitch=30, distance=0.0, near=0.002)
     scene = interp.ground_plane(camera, quads=4)
     assert np.any(scene.clip[:, 3] < 0) and np.any(scene.clip[:, 2] < -scene.clip[:, 3])
-    checked, _ = compare(scene.clip, scene.uv, scene.triangles, 40, 40, "perspective")
+    checked, _ = compare(scene.clip, scene.uv, scene.triangles, 40, 40, mode)
     assert checked > 600
 
 
@@ -121,6 +126,30 @@ def test_shared_edges_are_drawn_exactly_once(rng):
         assert union[inside].all(), "a pixel inside the fan was skipped"
 
 
+@pytest.mark.parametrize("flip", [False, True], ids=["ccw", "cw"])
+@pytest.mark.parametrize("diagonal", ["/", "\\"])
+def test_fill_rule_owns_left_and_bottom_edges(diagonal, flip):
+    # Derived by hand, no OpenGL needed. A square with corners on the pixel centres (0.5, 0.5)
+    # and (3.5, 3.5) (window coordinates, y up), cut along a diagonal into two triangles.
+    # Mesa's rule gives a triangle the centres on its left edges and horizontal bottom edges,
+    # so the square's left and bottom sides are drawn and its right and top sides are not:
+    # exactly the 3 x 3 centres (0.5 .. 2.5)^2, each once. With the triangle
+    # (0.5, 0.5), (3.5, 0.5), (0.5, 3.5) on its own: the centres on its left and bottom edges,
+    # none on its diagonal x + y = 4.
+    corners = np.array([[0.5, 0.5], [3.5, 0.5], [3.5, 3.5], [0.5, 3.5]])
+    halves = [[0, 1, 3], [1, 2, 3]] if diagonal == "/" else [[0, 1, 2], [0, 2, 3]]
+    if flip:
+        halves = [t[::-1] for t in halves]
+    clip = np.hstack([corners / 4 * 2 - 1, np.zeros((4, 1)), np.ones((4, 1))])
+    covers = [interp.rasterize(clip, np.zeros((4, 1)), [t], 4, 4)[1] for t in halves]
+    expected = np.zeros((4, 4), bool)
+    expected[1:, :3] = True  # window rows y = 0, 1, 2 are image rows 3, 2, 1
+    np.testing.assert_array_equal(covers[0].astype(int) + covers[1], expected)
+    if diagonal == "/":
+        lower_left = [[0, 0, 0, 0], [1, 0, 0, 0], [1, 1, 0, 0], [1, 1, 1, 0]]
+        np.testing.assert_array_equal(covers[0], np.array(lower_left, bool))
+
+
 def _inside_polygon(ring, width, height):
     """Pixel centres strictly inside a convex-or-star polygon around the image centre."""
     cols, rows = np.meshgrid(np.arange(width) + 0.5, height - (np.arange(height) + 0.5))
@@ -138,6 +167,25 @@ def _inside_polygon(ring, width, height):
         )
         inside |= (s1 >= 0) & (s2 > 0) & (s3 >= 0)
     return inside & ((cols != centre[0]) | (rows != centre[1]))
+
+
+@pytest.mark.parametrize("chunk", [1, 37, 300])
+def test_depth_test_in_small_chunks(monkeypatch, chunk):
+    # The depth test handles CHUNK fragments at a time (4 million by default, more than any
+    # other test draws). With small chunks, overlapping triangles put the fragments competing
+    # for one pixel into different chunks: the result must be the reference's, and identical
+    # to one chunk's.
+    clip, attributes, triangles = random_scene(np.random.default_rng(21), 30, behind=True)
+    whole = interp.fragments(clip, attributes, triangles, 48, 36)
+    monkeypatch.setattr(raster, "CHUNK", chunk)
+    chunked = interp.fragments(clip, attributes, triangles, 48, 36)
+    drawn = sum(interp.fragments(clip, attributes, [t], 48, 36).covered.sum() for t in triangles)
+    assert drawn > 10 * chunk, "the fragments before the depth test should take many chunks"
+    np.testing.assert_array_equal(chunked.pixel, whole.pixel)
+    np.testing.assert_array_equal(chunked.triangle, whole.triangle)
+    np.testing.assert_array_equal(chunked.barycentric, whole.barycentric)
+    checked, _ = compare(clip, attributes, triangles, 48, 36, "perspective")
+    assert checked > 300
 
 
 def test_depth_test_nearest_wins_and_first_wins_ties():
