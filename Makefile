@@ -12,7 +12,7 @@ STAMP  := $(VENV)/.installed-dev
 # JupyterLab refuses to start as root unless told; containers often run as root.
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: lessons present test bench handouts lint clean
+.PHONY: lessons present test bench bench-browser handouts lint clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -39,6 +39,11 @@ test: lint
 
 bench: $(STAMP)
 	$(BIN)/python -m interp.bench
+
+# Every app in JupyterLab in Chromium: step latency, fps while dragging, settle time, final frame
+# (tests/bench_browser.py --help; --fit measures whether each app fits the screen instead).
+bench-browser: $(STAMP)
+	$(BIN)/python tests/bench_browser.py
 
 handouts: $(STAMP)
 	$(BIN)/interp-figures --out handouts
