@@ -9,7 +9,7 @@ through Playwright, at the default figure size (viewport 1500 x 1100, device pix
 - drag: the slider's handle dragged back and forth with the mouse for ``--seconds`` s (a move
   every 16 ms), counting distinct pictures shown per second while the button is down;
 - settle: from mouse-up to the last change of the canvas (waiting until nothing changed for
-  1 s with the kernel idle), and how many pictures were shown after mouse-up;
+  0.8 s with the kernel idle), and how many pictures were shown after mouse-up;
 - final: whether the picture left on screen is the figure at the final value: the canvas's
   pixels against the same app drawn afresh in the kernel at its controls' values
   (``browser.TRUTH``), and the slider's readout against the kernel's value.
@@ -219,7 +219,7 @@ def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> d
     pictures go to that folder as TAG-shown.png and TAG-truth.png)."""
     drag(page, start, amplitude, args.seconds)
     t_down, t_up = last_input(page, "pointerdown"), last_input(page, "pointerup")
-    wait_idle(page, quiet_ms=1000, timeout=60)
+    wait_idle(page, quiet_ms=800, timeout=60)
     during = frames_between(page, canvas, t_down, t_up)
     after = frames_between(page, canvas, t_up, float("inf"))
     settle = (after[-1] - t_up) if after else 0.0
@@ -337,7 +337,7 @@ def bench_lesson(context, base, notebook, names, args, label="", only=None) -> l
     blank_runs = []
     for attempt in range(3):
         page = new_page(context)
-        counts = open_lesson(page, base, notebook)
+        counts = open_lesson(page, base, notebook, drawn_within=10)
         blank = [n for n in names if is_blank(canvas_pixels(figure_canvas(app_root(page, n))))]
         if blank:
             blank_runs.append(blank)

@@ -158,14 +158,12 @@ def screenshot_on_failure(request):
 # ----------------------------------------------------------------------------------- checks
 
 
-def assert_is_the_apps_figure(
-    page, canvas, count: int, when: str, constructed: bool = False
-) -> dict[str, str]:
+def assert_is_the_apps_figure(page, canvas, count: int, when: str) -> dict[str, str]:
     """The canvas shows a picture, and it is the figure the app draws at its current values
     (``browser.kernel_truth``); if not, both pictures go to test-artifacts/."""
     shown = canvas_pixels(canvas)
     assert not is_blank(shown), f"{when}: the figure is blank ({shown.shape[1]}x{shown.shape[0]})"
-    values, truth = kernel_truth(page, count, constructed=constructed)
+    values, truth = kernel_truth(page, count)
     wrong = mismatch(shown, truth)
     if wrong > TOLERANCE:
         from PIL import Image
