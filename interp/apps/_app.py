@@ -24,6 +24,7 @@ import numpy as np
 from IPython.display import display
 
 from interp._allocator import keep_freed_memory
+from interp.apps._live import Blitter, Coalescer, cheap_frames
 from interp.plots import styled
 from interp.plots.params import Param
 from interp.plots.registry import LessonFigure
@@ -72,7 +73,8 @@ class App:
             raise ValueError(f"figure width must be at most {MAX_WIDTH} in, got {width}")
         scale = 1.5 if _PRESENTATION["on"] else 1.0
         self.controls = {name: control(param) for name, param in figure_class.PARAMS.items()}
-        with styled(), plt.rc_context({"font.size": 9 * scale}), plt.ioff():
+        self._style = {"font.size": 9 * scale}
+        with styled(**self._style), plt.ioff():
             self.figure = plt.figure(figsize=(width * scale, height * scale))
             self.plot = figure_class(self.figure, **self.values)
         # Lay the figure out once, then freeze it: constrained layout would otherwise redo its
@@ -86,6 +88,10 @@ class App:
                 widget.style.font_size = "18px"
             widget.observe(self._changed, names="value")
         self._handle = None  # the figure is drawn already; displaying it shows that drawing
+        self.blitter = Blitter(self.figure, self.plot.dynamic)
+        self.coalescer = Coalescer(self.refresh)
+        if self.live:
+            cheap_frames(self.figure.canvas)
 
     @property
     def values(self) -> dict[str, object]:
@@ -104,9 +110,10 @@ class App:
 
     def refresh(self) -> None:
         """Draw with the controls' values and show the result."""
-        self.plot.update(**self.values)
+        with styled(**self._style):  # titles set now must look like those set at the start
+            self.plot.update(**self.values)
         if self.live:
-            self.figure.canvas.draw_idle()
+            self.blitter.draw()  # at once: no round trip through the browser first
         elif self._handle is not None:
             self._handle.update(self.figure)
 
@@ -149,7 +156,7 @@ class App:
 
     def _changed(self, change: dict) -> None:
         if self._holding_depth == 0:
-            self.refresh()
+            self.coalescer.request()  # latest value wins: see interp.apps._live
 
 
 def control(param: Param) -> widgets.ValueWidget:

@@ -105,6 +105,11 @@ class CheckerPanels(Plot):
         worst = float(self.views.error.max())
         self.axes[2].set_title(f"|Δ(u, v)| in texels (max {worst:.2f})")
 
+    @property
+    def dynamic(self) -> list:
+        images = [self.approximate, self.correct, self.error]
+        return [*images, *(ax.title for ax in self.axes)]
+
 
 class UVImages(Plot):
     """The interpolated u and v as images, for one mode.
@@ -148,3 +153,7 @@ class UVImages(Plot):
             image.set_data(np.ma.masked_array(uv[..., k], mask=~views.covered))
             image.set_extent((-0.5, int(p["width"]) - 0.5, int(p["height"]) - 0.5, -0.5))
             ax.set_title(f"{'uv'[k]} ({mode})")
+
+    @property
+    def dynamic(self) -> list:
+        return [*self.images, *(ax.title for ax in self.axes)]

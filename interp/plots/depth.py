@@ -84,6 +84,10 @@ class DepthAcross(Plot):
         z = depth.ndc_depth(np.clip(w, p["near"], p["far"]), p["near"], p["far"])
         self.curves["NDC z"].set_data(self.s, _normalized(z))
 
+    @property
+    def dynamic(self) -> list:
+        return list(self.curves.values())
+
 
 class DepthPrecision(Plot):
     """The smallest depth difference a depth buffer notices, against depth, for three near
@@ -145,3 +149,7 @@ class DepthPrecision(Plot):
         self.ax.set_ylim(every.min() / 2, every.max() * 2)
         self.ax.set_title(f"{self.params['buffer']} depth buffer, far = {far:g}")
         self.ax.legend(loc="upper left", fontsize="small")
+
+    @property
+    def dynamic(self) -> list:
+        return [*self.lines, self.ax.title]

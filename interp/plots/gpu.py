@@ -79,6 +79,10 @@ class ClippingView(Plot):
         self.counts = {"pieces": len(frags.clipped), "visible triangles": visible}
         self.ax.set_title(f"{visible} triangles in view became {len(frags.clipped)} after clipping")
 
+    @property
+    def dynamic(self) -> list:
+        return [self.image, self.outlines, self.ax.title]
+
 
 #: The lab's camera: rolled, so that depth varies along image rows (see Camera's roll).
 LAB_CAMERA = Camera(height=1.0, pitch=15.0, yaw=0.0, distance=3.0, roll=30.0)

@@ -13,7 +13,7 @@ from matplotlib.collections import LineCollection
 
 from interp import lerp
 from interp.plots._base import Plot
-from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery
+from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery, nice_ceiling
 
 Point = tuple[float, float]
 
@@ -151,6 +151,22 @@ class LineView(Plot):
             self.fan.set_segments([])
             self.hits.set_data([], [])
 
+    @property
+    def dynamic(self) -> list:
+        return [
+            self.plane,
+            self.segment,
+            *self.rays,
+            self.fan,
+            self.hits,
+            self.m_ray,
+            self.c_ray,
+            *self.markers.values(),
+            *self.labels.values(),
+            self.image_points,
+            self.ax.title,
+        ]
+
     def nearest_endpoint(self, w: float, x: float, radius: float) -> str | None:
         """``"A"`` or ``"B"`` if the plot point (w, x) is within ``radius`` of it, else None."""
         best, best_distance = None, radius
@@ -205,6 +221,10 @@ class ImageStrip(Plot):
         self.affine.set_data(self.s, lerp.lerp_affine(p["a1"], p["a2"], self.s))
         fit_y(self.ax, p["a1"], p["a2"])
 
+    @property
+    def dynamic(self) -> list:
+        return [self.correct, self.affine]
+
 
 class STCurve(Plot):
     """The mapping from screen parameter s to object parameter t, with samples marked.
@@ -252,6 +272,10 @@ class STCurve(Plot):
         s = (np.arange(n) + 0.5) / n if n else np.array([])
         self.samples.set_data(s, lerp.t_from_s(s, w1, w2) if n else [])
 
+    @property
+    def dynamic(self) -> list:
+        return [self.curve, self.samples]
+
 
 class STFamily(Plot):
     """The family of s-t curves for depth ratios ``w2/w1``, the current one in bold.
@@ -292,6 +316,10 @@ class STFamily(Plot):
     def redraw(self) -> None:
         """Draw the bold curve for the current ``ratio`` = w2 / w1."""
         self.current.set_data(self.s, lerp.t_from_s(self.s, 1.0, float(self.params["ratio"])))
+
+    @property
+    def dynamic(self) -> list:
+        return [self.current]
 
 
 class GapPlot(Plot):
@@ -344,9 +372,13 @@ class GapPlot(Plot):
         self.measured = (float(self.s[k]), float(gap[k]))
         self.peak.set_data([self.derived[0]], [self.derived[1]])
         self.measured_peak.set_data([self.measured[0]], [self.measured[1]])
-        self.ax.set_ylim(0, max(0.05, 1.15 * self.derived[1]))
+        self.ax.set_ylim(0, nice_ceiling(max(0.05, 1.1 * self.derived[1])))
         self.ax.set_title(
             f"derived: s* = √w2/(√w1+√w2) = {self.derived[0]:.3f}, gap {self.derived[1]:.3f}\n"
             f"sampled: s = {self.measured[0]:.3f}, gap {self.measured[1]:.3f}",
             fontsize="small",
         )
+
+    @property
+    def dynamic(self) -> list:
+        return [self.curve, self.peak, self.measured_peak, self.ax.title]

@@ -15,6 +15,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import ClassVar
 
+from matplotlib.artist import Artist
 from matplotlib.figure import Figure, SubFigure
 
 from interp import lerp
@@ -83,6 +84,19 @@ class LessonFigure(Plot):
     def build(self, figure: Figure | SubFigure) -> None:  # pragma: no cover - overridden
         """Make the plots on ``figure``."""
         raise NotImplementedError
+
+    @property
+    def dynamic(self) -> list[Artist] | None:
+        """Every artist the figure's plots change (see :attr:`Plot.dynamic`); None if one of
+        them cannot say."""
+        artists: list[Artist] = []
+        for value in vars(self).values():
+            for plot in value if isinstance(value, list) else [value]:
+                if isinstance(plot, Plot):
+                    if plot.dynamic is None:
+                        return None
+                    artists += plot.dynamic
+        return artists
 
 
 # ---------------------------------------------------------------------------- lessons 1-3
