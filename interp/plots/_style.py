@@ -49,18 +49,17 @@ def markevery(n: int) -> int:
 def fit_y(ax: Axes, *values: object) -> None:
     """Set the y range to span ``values`` (numbers or arrays), with a margin of 5% or more.
 
-        The ends are rounded outwards to a tenth of the range's order of magnitude, so that a
-        slider's small steps leave the axis as it is (and a live figure need not redraw it).
+    The ends are rounded outwards to a tenth of the range's order of magnitude, so that a
+    slider's small steps leave the axis as it is (and a live figure need not redraw it).
 
-        Examples
-        --------
-        >>> import matplotlib
-    import matplotlib.pyplot as plt
-        >>> ax = plt.subplots()[1]
-        >>> fit_y(ax, 0.0, 1.0); [float(y) for y in ax.get_ylim()]
-        [-0.1, 1.1]
-        >>> fit_y(ax, 0.02, 0.97); [float(y) for y in ax.get_ylim()]   # a small change: the same
-        [-0.1, 1.1]
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> ax = plt.subplots()[1]
+    >>> fit_y(ax, 0.0, 1.0); [float(y) for y in ax.get_ylim()]
+    [-0.1, 1.1]
+    >>> fit_y(ax, 0.02, 0.97); [float(y) for y in ax.get_ylim()]   # a small change: the same
+    [-0.1, 1.1]
     """
     every = np.concatenate([np.ravel(v) for v in values])
     low, high = float(every.min()), float(every.max())
