@@ -150,7 +150,7 @@ def _scalar(value: object) -> float:
     if isinstance(value, (complex, np.complexfloating)):
         if value.imag != 0:
             raise _NotAnAnswerError(
-                f"your function returned a complex number, {value}: is there a square root or "
+                f"your function returned a complex number, {value:.4g}: is there a square root or "
                 "a fractional power of a negative number?"
             )
         value = value.real
