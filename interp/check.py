@@ -1,108 +1,330 @@
-"""Check a student's function, and say what is wrong with it.
+"""Check a student's function, and say what is wrong with it, like a teaching assistant would.
 
 Each lesson ends with an exercise: write a small function, then call the checker here on it,
-e.g. ``interp.check.perspective_lerp(my_lerp)``. The checker calls the function on a set of
-cases with plain Python floats (no vectorizing needed), compares with the library, and if the
-answers differ, recognises the usual mistakes and explains them.
+e.g. ``interp.check.perspective_lerp(my_lerp)``. The checker calls the function with plain Python
+floats (no vectorizing needed) on a fixed list of cases: first one a student can redo by hand,
+then the endpoints and special cases (s = 0, s = 1, w1 = w2, ...), then random ones. It compares
+each answer with the library's own function, and when they differ it says
 
-Every checker returns a :class:`Verdict`, which is truthy when the function is right and shows
-its message in a notebook.
+- what the function returned, if that was not a number (None, a string, a generator...);
+- where it failed, if it raised an error (e.g. divided by zero at s = 0);
+- which mistake it made, when the wrong numbers are exactly those of a known mistake; where two
+  mistakes give the same numbers, it says so instead of guessing which one the student made;
+- otherwise the first case it got wrong, the hand-checkable one if that one is wrong.
+
+A function whose body is still ``raise NotImplementedError()`` (the student edition's stub) is
+"not written yet", which is no error. Every checker returns a :class:`Verdict`, which is truthy
+when the function is right and shows its message in a notebook.
+
+Examples
+--------
+>>> t_from_s(lambda s, w1, w2: s * w1 / (s * w1 + (1 - s) * w2))
+✓ t_from_s: right on all 30 cases, among them s = 0, s = 1 and w1 = w2.
+>>> def t_from_s_unwritten(s, w1, w2):
+...     raise NotImplementedError()
+>>> t_from_s(t_from_s_unwritten)
+… not written yet: replace `raise NotImplementedError()` with your code, then run the cell again.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+import types
+import warnings
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
-from interp import depth, lerp, mistakes
+from interp import barycentric, depth, lerp, mistakes, texture
+
+__all__ = [
+    "Verdict",
+    "affine_error",
+    "checker",
+    "clip_barycentrics",
+    "gap_peak",
+    "ndc_depth",
+    "perspective_lerp",
+    "project",
+    "s_from_t",
+    "t_from_s",
+    "where_m_lands",
+]
+
+#: What the student edition's exercise cells hold until the student writes the function.
+STUB = "raise NotImplementedError()"
+
+NOT_WRITTEN = f"not written yet: replace `{STUB}` with your code, then run the cell again."
 
 
 @dataclass(frozen=True)
 class Verdict:
-    """The outcome of a check: ``ok`` and a message for the student."""
+    """The outcome of a check: ``ok`` and a message for the student.
+
+    ``pending`` marks a function that is not written yet: not right, but not an error either.
+
+    Examples
+    --------
+    >>> bool(Verdict(True, "right")), Verdict(False, "wrong")
+    (True, ✗ wrong)
+    """
 
     ok: bool
     message: str
+    pending: bool = False
 
     def __bool__(self) -> bool:
         return self.ok
 
+    def _mark(self) -> str:
+        return "✓" if self.ok else "…" if self.pending else "✗"
+
     def __repr__(self) -> str:
-        return ("✓ " if self.ok else "✗ ") + self.message
+        return f"{self._mark()} {self.message}"
 
     def _repr_markdown_(self) -> str:
-        return ("**✓** " if self.ok else "**✗** ") + self.message
+        return f"**{self._mark()}** {self.message}"
 
 
-Case = tuple[float, ...]
+@dataclass(frozen=True)
+class Case:
+    """Arguments for the student's function, and what is special about them, if anything."""
+
+    args: tuple[float, ...]
+    note: str = ""
 
 
-def _cases(rng: np.random.Generator, n: int, draw: Callable[[np.random.Generator], Case]):
-    return [tuple(float(x) for x in draw(rng)) for _ in range(n)]
+class _NotAnAnswerError(Exception):
+    """The student's function returned something that is not an answer (None, a string...)."""
+
+
+def _show(x: float) -> str:
+    """A number as a student would write it: 3, 0.5, -0.25, 0.111111."""
+    if isinstance(x, float) and x.is_integer():
+        return str(int(x))
+    return f"{x:.6g}"
+
+
+def _show_value(value: object) -> str:
+    if isinstance(value, tuple):
+        return "(" + ", ".join(_show(v) for v in value) + ")"
+    return _show(value)
+
+
+def _random(
+    seed: int, n: int, draw: Callable[[np.random.Generator], Sequence[float]]
+) -> list[Case]:
+    rng = np.random.default_rng(seed)
+    return [Case(tuple(float(x) for x in draw(rng))) for _ in range(n)]
+
+
+def _kind(value: object) -> str:
+    if isinstance(value, list):
+        return "a list"
+    if isinstance(value, tuple):
+        return "a tuple"
+    return "an array"
+
+
+def _scalar(value: object) -> float:
+    """The student's answer as a float, or :class:`_NotAnAnswerError` saying what it was instead."""
+    if value is None:
+        raise _NotAnAnswerError("your function returned None: did you forget `return`?")
+    if isinstance(value, (str, bytes)):
+        text = repr(value) if len(value) < 40 else repr(value[:37]) + "..."
+        raise _NotAnAnswerError(
+            f"your function returned a string, {text}: return a number, not text."
+        )
+    if isinstance(value, dict):
+        raise _NotAnAnswerError("your function returned a dict: return a number.")
+    if isinstance(value, (types.GeneratorType, Iterator)):
+        raise _NotAnAnswerError("your function returned a generator: return a number.")
+    if isinstance(value, (list, tuple)) or (isinstance(value, np.ndarray) and value.size != 1):
+        n = len(value) if isinstance(value, (list, tuple)) else value.size
+        raise _NotAnAnswerError(
+            f"your function returned {_kind(value)} of {n} value{'s' * (n != 1)}: "
+            "return one number."
+        )
+    if isinstance(value, np.ndarray):
+        value = value.reshape(()).item()
+    if isinstance(value, (complex, np.complexfloating)):
+        if value.imag != 0:
+            raise _NotAnAnswerError(
+                f"your function returned a complex number, {value:.4g}: is there a square root or "
+                "a fractional power of a negative number?"
+            )
+        value = value.real
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise _NotAnAnswerError(
+            f"your function returned a {type(value).__name__}: return a number."
+        ) from None
+
+
+def _triple(value: object) -> tuple[float, float, float]:
+    """Three floats, or :class:`_NotAnAnswerError` saying what the student's function returned."""
+    if value is None:
+        raise _NotAnAnswerError("your function returned None: did you forget `return`?")
+    if isinstance(value, (str, bytes, dict)):
+        _scalar(value)  # raises with the right words
+    if isinstance(value, (types.GeneratorType, Iterator)):
+        raise _NotAnAnswerError(
+            "your function returned a generator: return a list, e.g. `[x / total for x in q]` "
+            "or `list(...)`."
+        )
+    if isinstance(value, (list, tuple, np.ndarray)):
+        flat = np.ravel(np.asarray(value, dtype=object))
+        if flat.size != 3:
+            raise _NotAnAnswerError(
+                f"your function returned {_kind(value)} of {flat.size} "
+                f"value{'s' * (flat.size != 1)}: return three weights, one per vertex."
+            )
+        return tuple(_scalar(x) for x in flat)
+    _scalar(value)  # a number, or whatever else it is: say what it was
+    raise _NotAnAnswerError(
+        "your function returned one number: return three weights, one per vertex."
+    )
+
+
+@dataclass
+class _Outcome:
+    value: object = None  # a float or a tuple of floats
+    error: BaseException | None = None
+    rejected: str = ""
+
+
+def _run(student: Callable[..., object], case: Case, convert: Callable) -> _Outcome:
+    try:
+        with warnings.catch_warnings(), np.errstate(divide="raise", invalid="raise", over="raise"):
+            warnings.simplefilter("error")
+            returned = student(*case.args)
+    except NotImplementedError as error:
+        return _Outcome(error=error)
+    except Exception as error:  # the student's code: report it, never raise
+        return _Outcome(error=error)
+    try:
+        return _Outcome(value=convert(returned))
+    except _NotAnAnswerError as rejected:
+        return _Outcome(rejected=str(rejected))
+
+
+def _close(got: object, expected: object, tolerance: float) -> bool:
+    return bool(np.all(np.isclose(got, expected, rtol=tolerance, atol=tolerance, equal_nan=True)))
+
+
+def _join(notes: list[str]) -> str:
+    notes = list(dict.fromkeys(notes))
+    return notes[0] if len(notes) == 1 else ", ".join(notes[:-1]) + " and " + notes[-1]
+
+
+def _where(arguments: str, case: Case) -> str:
+    place = f"({arguments}) = {_show_value(case.args)}"
+    return f"{place} ({case.note})" if case.note else place
+
+
+def _error_words(error: BaseException) -> str:
+    if isinstance(error, ZeroDivisionError) or (
+        isinstance(error, FloatingPointError) and "divide" in str(error)
+    ):
+        return "divided by zero"
+    text = str(error)
+    return f"raised {type(error).__name__}" + (f" ({text})" if text else "")
+
+
+Mistake = tuple[Callable[..., object], str]
 
 
 def _judge(
     name: str,
-    student: Callable[..., object],
+    student: object,
     reference: Callable[..., object],
     cases: Sequence[Case],
-    argument_names: str,
-    mistakes_known: Sequence[tuple[Callable[..., object], str]] = (),
+    arguments: str,
+    mistakes_known: Sequence[Mistake] = (),
+    convert: Callable[[object], object] = _scalar,
+    tolerance: float = 1e-6,
+    numerically: tuple[float, str] | None = None,
 ) -> Verdict:
+    """Run ``student`` on every case and compare with ``reference``; explain the first problem.
+
+    ``mistakes_known`` pairs a wrong function with what to tell a student whose answers are
+    exactly its answers; ``numerically`` = (tolerance, message) accepts answers that are right
+    only to that tolerance, with that message.
+    """
     if not callable(student):
         return Verdict(False, f"pass your function itself, e.g. check.{name}(my_function)")
-    got, expected = [], []
-    for case in cases:
-        try:
-            value = np.asarray(student(*case), dtype=float)
-        except Exception as error:  # the student's code: report, never raise
-            return Verdict(
-                False,
-                f"your function raised {type(error).__name__}: {error} "
-                f"for ({argument_names}) = {case}",
-            )
-        got.append(value)
-        expected.append(np.asarray(reference(*case), dtype=float))
-    if all(
-        g.shape == e.shape and np.allclose(g, e, rtol=1e-6, atol=1e-9)
-        for g, e in zip(got, expected, strict=True)
+    outcomes = [_run(student, case, convert) for case in cases]
+    expected = [convert(reference(*case.args)) for case in cases]
+    if any(isinstance(o.error, NotImplementedError) for o in outcomes):
+        return Verdict(False, NOT_WRITTEN, pending=True)
+    for outcome in outcomes:
+        if outcome.rejected:
+            return Verdict(False, outcome.rejected)
+    answered = [o.error is None for o in outcomes]
+    right = [
+        ok and _close(o.value, e, tolerance)
+        for ok, o, e in zip(answered, outcomes, expected, strict=True)
+    ]
+    notes = [case.note for case in cases if case.note]
+    if all(right):
+        among = f", among them {_join(notes)}" if notes else ""
+        return Verdict(True, f"{name}: right on all {len(cases)} cases{among}.")
+    if numerically and all(
+        ok and _close(o.value, e, numerically[0])
+        for ok, o, e in zip(answered, outcomes, expected, strict=True)
     ):
-        return Verdict(True, f"{name}: right on all {len(cases)} cases.")
-    for wrong, explanation in mistakes_known:
-        answers = [np.asarray(wrong(*case), dtype=float) for case in cases]
-        if all(
-            g.shape == a.shape and np.allclose(g, a, rtol=1e-6, atol=1e-9)
-            for g, a in zip(got, answers, strict=True)
-        ):
-            return Verdict(False, explanation)
-    for case, g, e in zip(cases, got, expected, strict=True):
-        if g.shape != e.shape or not np.allclose(g, e, rtol=1e-6, atol=1e-9):
-            return Verdict(
-                False,
-                f"for ({argument_names}) = {tuple(round(c, 4) for c in case)} the answer is "
-                f"{np.round(e, 6).tolist()}, your function gave {np.round(g, 6).tolist()}",
-            )
-    raise AssertionError("unreachable")  # pragma: no cover
+        return Verdict(True, f"{name}: {numerically[1]}")
+    if all(answered):
+        got = [o.value for o in outcomes]
+        for wrong, explanation in mistakes_known:
+            if all(
+                _close(g, convert(wrong(*case.args)), tolerance)
+                for g, case in zip(got, cases, strict=True)
+            ):
+                return Verdict(False, explanation)
+    first = next(i for i, ok in enumerate(right) if not ok)
+    case, outcome = cases[first], outcomes[first]
+    elsewhere = ""
+    wrong_cases = [c for c, ok in zip(cases, right, strict=True) if not ok]
+    if all(c.note for c in wrong_cases):
+        elsewhere = f" It is right everywhere else: only {_join([c.note for c in wrong_cases])} "
+        elsewhere += "go wrong." if len({c.note for c in wrong_cases}) > 1 else "goes wrong."
+    answer = _show_value(expected[first])
+    if outcome.error is not None:
+        return Verdict(
+            False,
+            f"your function {_error_words(outcome.error)} at {_where(arguments, case)}, where "
+            f"the answer is {answer}.{elsewhere}",
+        )
+    return Verdict(
+        False,
+        f"for {_where(arguments, case)} the answer is {answer}, your function gave "
+        f"{_show_value(outcome.value)}.{elsewhere}",
+    )
+
+
+# --- lesson 1 -------------------------------------------------------------------------------
 
 
 def project(student: Callable[[float, float, float], float]) -> Verdict:
-    """Lesson 1: ``student(x, z, d)`` is the image of the view-space point (x, z), z < 0, on the
-    image plane at distance d.
+    """``student(x, z, d)`` is the image coordinate of the view-space point (x, z), z < 0, on
+    the image plane at distance d (:func:`interp.project_to_image_plane`).
 
     Examples
     --------
     >>> project(lambda x, z, d: d * x / -z)
-    ✓ project: right on all 20 cases.
+    ✓ project: right on all 24 cases, among them x = 0 and a point on the image plane.
     >>> project(lambda x, z, d: d * x / z)
-    ✗ the image is mirrored: divide by the depth w = -z (the camera looks down -z), not by z
+    ✗ the image is mirrored: divide by the depth w = -z (the camera looks down -z), not by z.
     """
-    cases = _cases(
-        np.random.default_rng(1),
-        20,
-        lambda r: (r.uniform(-5, 5), r.uniform(-9, -0.5), r.uniform(0.2, 3)),
-    )
+    cases = [
+        Case((1.0, -2.0, 1.0)),
+        Case((3.0, -2.0, 0.5)),
+        Case((0.0, -4.0, 2.0), "x = 0"),
+        Case((-1.5, -1.0, 1.0), "a point on the image plane"),
+        *_random(1, 20, lambda r: (r.uniform(-5, 5), r.uniform(-9, -0.5), r.uniform(0.2, 3))),
+    ]
     return _judge(
         "project",
         student,
@@ -111,94 +333,206 @@ def project(student: Callable[[float, float, float], float]) -> Verdict:
         "x, z, d",
         [
             (
-                lambda x, z, d: d * x / z,
+                lambda x, z, d: -lerp.project_to_image_plane([x, z], d),
                 "the image is mirrored: divide by the depth w = -z (the camera looks down -z), "
-                "not by z",
+                "not by z.",
             ),
-            (lambda x, z, d: x / -z, "scale by d: the image plane is d away from the eye"),
-            (lambda x, z, d: d * x, "divide by the depth: further points land nearer the axis"),
+            (
+                lambda x, z, d: lerp.project_to_image_plane([x, z], 1.0),
+                "scale by d: the image plane is d away from the eye (your answer is right only "
+                "where d = 1).",
+            ),
+            (
+                lambda x, z, d: d * x,
+                "divide by the depth: a point twice as far away lands twice as close to the axis.",
+            ),
         ],
     )
 
 
-def _st_cases() -> list[Case]:
-    return _cases(
-        np.random.default_rng(2),
-        30,
-        lambda r: (r.uniform(0, 1), r.uniform(0.1, 20), r.uniform(0.1, 20)),
+def where_m_lands(student: Callable[[float, float, float, float, float], float]) -> Verdict:
+    """Lesson 1: ``student(x1, z1, x2, z2, d)`` is where the image of M, the middle of the segment
+    from A = (x1, z1) to B = (x2, z2), lands along the image from a to b: the fraction s of the way
+    from a (s = 0) to b (s = 1).
+
+    Compared with :func:`interp.s_from_t` at t = 1/2 (and :func:`interp.project_to_image_plane`
+    for the mistakes).
+
+    Examples
+    --------
+    >>> def where(x1, z1, x2, z2, d):
+    ...     a, b = d * x1 / -z1, d * x2 / -z2
+    ...     m = d * (x1 + x2) / 2 / -((z1 + z2) / 2)
+    ...     return (m - a) / (b - a)
+    >>> where_m_lands(where)
+    ✓ where_m_lands: right on all 24 cases, among them A and B equally deep and A on the axis.
+    >>> where_m_lands(lambda x1, z1, x2, z2, d: 0.5)
+    ✗ 1/2 is where M would land if projection kept ratios along the line. ...
+    """
+
+    def draw(r: np.random.Generator) -> tuple[float, ...]:
+        x1, z1, z2 = r.uniform(-4, 4), r.uniform(-9, -0.5), r.uniform(-9, -0.5)
+        # keep the images of A and B apart: the eye, A and B are never nearly collinear
+        x2 = x1 * z2 / z1 + r.choice([-1, 1]) * r.uniform(0.5, 4)
+        return x1, z1, x2, z2, r.uniform(0.2, 3)
+
+    cases = [
+        Case((-1.0, -1.0, 2.0, -3.0, 1.0)),
+        Case((1.0, -3.0, -2.0, -1.0, 2.0)),
+        Case((-1.0, -2.0, 3.0, -2.0, 1.0), "A and B equally deep"),
+        Case((0.0, -1.0, 1.0, -4.0, 0.5), "A on the axis"),
+        *_random(11, 20, draw),
+    ]
+
+    def image(x: float, z: float, d: float) -> float:
+        return lerp.project_to_image_plane([x, z], d)
+
+    return _judge(
+        "where_m_lands",
+        student,
+        lambda x1, z1, x2, z2, d: lerp.s_from_t(0.5, -z1, -z2),
+        cases,
+        "x1, z1, x2, z2, d",
+        [
+            (
+                lambda *args: 0.5,
+                "1/2 is where M would land if projection kept ratios along the line. It does so "
+                "only when A and B are equally deep: project A, B and M, then ask how far m is "
+                "from a, as a fraction of the way to b.",
+            ),
+            (
+                lambda x1, z1, x2, z2, d: 1 - lerp.s_from_t(0.5, -z1, -z2),
+                "that is measured from b: s is 0 at a, the image of A, and 1 at b.",
+            ),
+            (
+                lambda x1, z1, x2, z2, d: image((x1 + x2) / 2, (z1 + z2) / 2, d),
+                "that is m, the image coordinate of M; now say where m lies between a and b, as "
+                "a fraction of the way from a to b.",
+            ),
+        ],
     )
 
 
+# --- lessons 2 and 3: the s-t mapping --------------------------------------------------------
+
+
+def _st_cases(first: str) -> list[Case]:
+    return [
+        Case((0.5, 1.0, 3.0)),
+        Case((0.0, 1.0, 3.0), f"{first} = 0"),
+        Case((1.0, 1.0, 3.0), f"{first} = 1"),
+        Case((0.3, 2.0, 2.0), "w1 = w2"),
+        Case((0.75, 4.0, 1.0)),
+        *_random(2, 25, lambda r: (r.uniform(0, 1), r.uniform(0.1, 20), r.uniform(0.1, 20))),
+    ]
+
+
 def s_from_t(student: Callable[[float, float, float], float]) -> Verdict:
-    """``student(t, w1, w2)`` is the screen parameter of the point at object parameter t.
+    """``student(t, w1, w2)`` is the screen parameter of the point at object parameter t
+    (:func:`interp.s_from_t`).
 
     Examples
     --------
     >>> s_from_t(lambda t, w1, w2: t * w2 / ((1 - t) * w1 + t * w2))
-    ✓ s_from_t: right on all 30 cases.
+    ✓ s_from_t: right on all 30 cases, among them t = 0, t = 1 and w1 = w2.
+    >>> s_from_t(lambda t, w1, w2: t * w1 / (t * w1 + (1 - t) * w2))
+    ✗ your function gives t w1 / (t w1 + (1-t) w2): that is t_from_s applied to t, ...
     """
     return _judge(
         "s_from_t",
         student,
         lerp.s_from_t,
-        _st_cases(),
+        _st_cases("t"),
         "t, w1, w2",
         [
             (
                 lambda t, w1, w2: t,
-                "that is t itself: true only when w1 = w2; project the point "
-                "P(t) = (1-t) A + t B, it is the interpolated position that gets divided by w",
+                "that is t itself, true only when w1 = w2. Project the point P(t) = (1-t) A + "
+                "t B: it is the interpolated position that gets divided by its depth.",
             ),
-            (lambda t, w1, w2: lerp.s_from_t(t, w2, w1), "w1 and w2 are swapped"),
-            (lambda t, w1, w2: lerp.t_from_s(t, w1, w2), "that is the inverse mapping, t_from_s"),
+            (
+                lambda t, w1, w2: lerp.t_from_s(t, w1, w2),
+                "your function gives t w1 / (t w1 + (1-t) w2): that is t_from_s applied to t, "
+                "and also s_from_t with w1 and w2 swapped (the same formula, so either "
+                "mistake gives these numbers). At (t, w1, w2) = (0.5, 1, 3) the answer is 0.75: "
+                "the middle of AB shows nearer b, the image of the far end.",
+            ),
         ],
     )
 
 
 def t_from_s(student: Callable[[float, float, float], float]) -> Verdict:
-    """Lesson 2: ``student(s, w1, w2)`` is the object parameter of the point seen at s.
+    """Lesson 2: ``student(s, w1, w2)`` is the object parameter t of the point seen at screen
+    parameter s (:func:`interp.t_from_s`).
 
     Examples
     --------
     >>> t_from_s(lambda s, w1, w2: s)
-    ✗ that is s itself: true only when w1 = w2 (an orthographic camera); ...
+    ✗ that is s itself, true only when w1 = w2 ...
+    >>> t_from_s(lambda s, w1, w2: s * w2 / (s * w2 + (1 - s) * w1))
+    ✗ your function gives s w2 / (s w2 + (1-s) w1): ...
     """
     return _judge(
         "t_from_s",
         student,
         lerp.t_from_s,
-        _st_cases(),
+        _st_cases("s"),
         "s, w1, w2",
         [
             (
                 lambda s, w1, w2: s,
-                "that is s itself: true only when w1 = w2 (an orthographic "
-                "camera); solve s = t w2 / ((1-t) w1 + t w2) for t",
+                "that is s itself, true only when w1 = w2 (the segment parallel to the image "
+                "plane). The pixel at s shows the point P(t) whose projection lands at p(s): "
+                "project P(t) and solve for t.",
             ),
-            (lambda s, w1, w2: lerp.t_from_s(s, w2, w1), "w1 and w2 are swapped"),
-            (lambda s, w1, w2: lerp.s_from_t(s, w1, w2), "that is the forward mapping, s_from_t"),
+            (
+                lambda s, w1, w2: lerp.s_from_t(s, w1, w2),
+                "your function gives s w2 / (s w2 + (1-s) w1): that is the forward map s_from_t "
+                "applied to s, and also t_from_s with w1 and w2 swapped, or with each end "
+                "weighted by its own w where 1/w belongs (all the same formula, so I cannot "
+                "tell which you did). At (s, w1, w2) = (0.5, 1, 3) the answer is 0.25: the "
+                "middle of the image shows a point nearer A, the near end.",
+            ),
+            (
+                lambda s, w1, w2: 1 - lerp.t_from_s(s, w1, w2),
+                "that is 1 - t: t is measured from A (t = 0 at A, 1 at B).",
+            ),
         ],
     )
 
 
 def gap_peak(student: Callable[[float, float], float]) -> Verdict:
-    """Lesson 3: ``student(w1, w2)`` is the screen parameter s where ``|t - s|`` is largest.
+    """Lesson 3: ``student(w1, w2)`` is the screen parameter s where the gap ``|t - s|`` is
+    largest, for w1 != w2 (:func:`interp.gap_peak`).
+
+    A peak found numerically (to 1e-3) is accepted, with a nudge towards the closed form.
 
     Examples
     --------
     >>> gap_peak(lambda w1, w2: w2**0.5 / (w1**0.5 + w2**0.5))
-    ✓ gap_peak: right on all 30 cases.
+    ✓ gap_peak: right on all 24 cases, among them w2 much larger than w1 and w1 much larger than w2.
+    >>> import numpy as np
+    >>> def numerically(w1, w2):
+    ...     s = np.linspace(0, 1, 100001)
+    ...     return s[np.argmax(np.abs(s * w1 / (s * w1 + (1 - s) * w2) - s))]
+    >>> gap_peak(numerically)
+    ✓ gap_peak: right numerically (to 1e-3 on all 24 cases); now find the closed form.
     """
+
+    def draw(r: np.random.Generator) -> tuple[float, float]:
+        w1 = r.uniform(0.2, 20)
+        return w1, w1 * r.choice([1 / r.uniform(1.5, 30), r.uniform(1.5, 30)])
+
     cases = [
-        c
-        for c in _cases(
-            np.random.default_rng(3), 40, lambda r: (r.uniform(0.1, 20), r.uniform(0.1, 20))
-        )
-        if abs(c[0] - c[1]) > 1e-3
-    ][:30]
+        Case((1.0, 9.0)),
+        Case((4.0, 1.0)),
+        Case((1.0, 400.0), "w2 much larger than w1"),
+        Case((100.0, 1.0), "w1 much larger than w2"),
+        *_random(3, 20, draw),
+    ]
 
     def peak(w1: float, w2: float) -> float:
-        return np.sqrt(w2) / (np.sqrt(w1) + np.sqrt(w2))
+        return lerp.gap_peak(w1, w2)[0]
 
     return _judge(
         "gap_peak",
@@ -209,32 +543,56 @@ def gap_peak(student: Callable[[float, float], float]) -> Verdict:
         [
             (
                 lambda w1, w2: 0.5,
-                "the gap is not symmetric: set d(t - s)/ds = 0 with "
-                "t = t_from_s(s, w1, w2) and solve for s",
+                "the gap is not symmetric: it peaks nearer the far end's image. Find where "
+                "t(s) - s stops growing: where dt/ds = 1.",
             ),
-            (lambda w1, w2: peak(w2, w1), "w1 and w2 are swapped"),
             (
-                lambda w1, w2: w2 / (w1 + w2),
-                "close: the derivative dt/ds = w1 w2 / (s w1 + "
-                "(1-s) w2)^2 equals 1 where s w1 + (1-s) w2 = sqrt(w1 w2): square roots appear",
+                lambda w1, w2: 1 - peak(w1, w2),
+                "that is 1 - s*, the peak with w1 and w2 swapped, which is also where the peak "
+                "is in t (t_from_s(s*, w1, w2) = 1 - s*): return the screen parameter s.",
+            ),
+            (
+                lambda w1, w2: lerp.s_from_t(0.5, w1, w2),
+                "that is w2 / (w1 + w2), where the middle of AB shows, not where the gap peaks. "
+                "dt/ds = w1 w2 / (s w1 + (1-s) w2)^2 equals 1 where s w1 + (1-s) w2 = "
+                "sqrt(w1 w2): square roots appear.",
+            ),
+            (
+                lambda w1, w2: lerp.gap_peak(w1, w2)[1],
+                "that is the height of the gap at its peak; return where it peaks, s*.",
             ),
         ],
+        numerically=(
+            1e-3,
+            "right numerically (to 1e-3 on all 24 cases); now find the closed form.",
+        ),
     )
 
 
+# --- lesson 4 --------------------------------------------------------------------------------
+
+
 def ndc_depth(student: Callable[[float, float, float], float]) -> Verdict:
-    """Lesson 4: ``student(w, near, far)`` is NDC z for view depth w.
+    """Lesson 4: ``student(w, near, far)`` is NDC z at view depth w, for the projection matrix
+    of :func:`interp.perspective` (:func:`interp.ndc_depth`).
 
     Examples
     --------
     >>> ndc_depth(lambda w, n, f: (f + n) / (f - n) - 2 * f * n / ((f - n) * w))
-    ✓ ndc_depth: right on all 30 cases.
+    ✓ ndc_depth: right on all 23 cases, among them w = near and w = far.
+    >>> ndc_depth(lambda w, n, f: 2 * (w - n) / (f - n) - 1)
+    ✗ that is linear in w, ...
     """
-    cases = _cases(
-        np.random.default_rng(4),
-        30,
-        lambda r: (lambda n, f: (r.uniform(n, f), n, f))(r.uniform(0.01, 2), r.uniform(3, 100)),
-    )
+    cases = [
+        Case((2.0, 1.0, 3.0)),
+        Case((1.0, 1.0, 3.0), "w = near"),
+        Case((3.0, 1.0, 3.0), "w = far"),
+        *_random(
+            4,
+            20,
+            lambda r: (lambda n, f: (r.uniform(n, f), n, f))(r.uniform(0.01, 2), r.uniform(3, 100)),
+        ),
+    ]
     return _judge(
         "ndc_depth",
         student,
@@ -244,36 +602,62 @@ def ndc_depth(student: Callable[[float, float, float], float]) -> Verdict:
         [
             (
                 lambda w, n, f: 2 * (w - n) / (f - n) - 1,
-                "that is linear in w; NDC z is z_clip / w, which is linear in 1/w: A + B / w",
+                "that is linear in w, and right only at the near and far planes. NDC z is "
+                "z_clip / w, an affine function of 1/w: A + B / w.",
             ),
-            (lambda w, n, f: depth.window_depth(w, n, f), "that is window z, (NDC z + 1) / 2"),
+            (
+                lambda w, n, f: depth.ndc_depth(w, n, f) * w,
+                "that is z_clip, the third row of the matrix times the point; NDC z is z_clip "
+                "divided by w_clip = w.",
+            ),
+            (
+                depth.window_depth,
+                "that is window z, (NDC z + 1) / 2, in [0, 1]; NDC z runs from -1 to 1.",
+            ),
             (
                 lambda w, n, f: -depth.ndc_depth(w, n, f),
-                "the sign is flipped: the near plane is at NDC z = -1",
+                "the sign is flipped: NDC z is -1 at the near plane and +1 at the far plane.",
             ),
         ],
     )
 
 
+# --- lesson 5 --------------------------------------------------------------------------------
+
+
 def perspective_lerp(student: Callable[[float, float, float, float, float], float]) -> Verdict:
-    """Lesson 5: ``student(a1, a2, w1, w2, s)`` interpolates an attribute perspective-correctly.
+    """Lesson 5: ``student(a1, a2, w1, w2, s)`` is the attribute seen at screen parameter s,
+    interpolated perspective-correctly (:func:`interp.lerp_perspective`).
+
+    The checker sees only a1, a2, w1, w2 and s, so it recognises only mistakes made of those
+    (dividing by window z needs near and far, which it does not have).
 
     Examples
     --------
+    >>> perspective_lerp(lambda a1, a2, w1, w2, s: ((1-s) * a1/w1 + s * a2/w2) / ((1-s)/w1 + s/w2))
+    ✓ perspective_lerp: right on all 30 cases, among them s = 0, s = 1, w1 = w2 and a1 = a2.
     >>> perspective_lerp(lambda a1, a2, w1, w2, s: (1 - s) * a1 + s * a2)
-    ✗ that is affine (screen-space) interpolation: ...
+    ✗ that is affine (screen-space) interpolation, ...
     """
-    cases = _cases(
-        np.random.default_rng(5),
-        30,
-        lambda r: (
-            r.uniform(-3, 3),
-            r.uniform(-3, 3),
-            r.uniform(0.2, 20),
-            r.uniform(0.2, 20),
-            r.uniform(0, 1),
+    cases = [
+        Case((0.0, 1.0, 1.0, 3.0, 0.5)),
+        Case((2.0, -1.0, 4.0, 1.0, 0.25)),
+        Case((0.0, 1.0, 1.0, 3.0, 0.0), "s = 0"),
+        Case((0.0, 1.0, 1.0, 3.0, 1.0), "s = 1"),
+        Case((0.5, 2.0, 2.0, 2.0, 0.5), "w1 = w2"),
+        Case((0.7, 0.7, 1.0, 5.0, 0.4), "a1 = a2"),
+        *_random(
+            5,
+            24,
+            lambda r: (
+                r.uniform(-3, 3),
+                r.uniform(-3, 3),
+                r.uniform(0.2, 20),
+                r.uniform(0.2, 20),
+                r.uniform(0, 1),
+            ),
         ),
-    )
+    ]
     return _judge(
         "perspective_lerp",
         student,
@@ -283,45 +667,57 @@ def perspective_lerp(student: Callable[[float, float, float, float, float], floa
         [
             (
                 lambda a1, a2, w1, w2, s: lerp.lerp_affine(a1, a2, s),
-                "that is affine (screen-space) interpolation: interpolate a/w and 1/w "
-                "linearly in s, then divide one by the other",
+                "that is affine (screen-space) interpolation, right only when w1 = w2: a/w "
+                "and 1/w are what is linear in s. Interpolate both, then divide.",
             ),
             (
                 lambda a1, a2, w1, w2, s: lerp.lerp_affine(a1 / w1, a2 / w2, s),
-                "you interpolated a/w but did not divide by the interpolated 1/w",
+                "that is a/w, interpolated: now divide it by the interpolated 1/w.",
             ),
             (
                 mistakes.lerp_divided_too_early,
-                "you multiplied by a linearly interpolated w; w is not linear on the screen, "
-                "1/w is: divide by the interpolated 1/w instead",
+                "you multiplied the interpolated a/w by a linearly interpolated w; w is not "
+                "linear on the screen, 1/w is: divide by the interpolated 1/w instead.",
             ),
             (
                 lambda a1, a2, w1, w2, s: lerp.lerp_perspective(a1, a2, w2, w1, s),
-                "w1 and w2 are swapped",
+                "your function gives ((1-s) a1 w1 + s a2 w2) / ((1-s) w1 + s w2): each end "
+                "weighted by its w where 1/w belongs. Swapping w1 and w2, or using s_from_t "
+                "where t_from_s belongs, gives these same numbers. The near end (smaller w) "
+                "must count more: at (a1, a2, w1, w2, s) = (0, 1, 1, 3, 0.5) the answer is 0.25.",
             ),
         ],
     )
 
 
+# --- lesson 6 --------------------------------------------------------------------------------
+
+
 def checker(student: Callable[[float, float, float], float]) -> Verdict:
-    """Lesson 6: ``student(u, v, frequency)`` is 1 on white checks and 0 on black ones, with
-    the check at the origin black.
+    """``student(u, v, frequency)`` is 1 on white checks and 0 on black ones, with the check at
+    the origin black (:func:`interp.texture.checker`).
 
     Examples
     --------
     >>> import math
     >>> checker(lambda u, v, f: (math.floor(u * f) + math.floor(v * f)) % 2)
-    ✓ checker: right on all 40 cases.
+    ✓ checker: right on all 36 cases, among them negative u and negative v.
+    >>> checker(lambda u, v, f: (int(u * f) + int(v * f)) % 2)
+    ✗ int() rounds towards zero, ...
     """
-    cases = _cases(
-        np.random.default_rng(6),
-        40,
-        lambda r: (r.uniform(0, 1), r.uniform(0, 1), float(r.integers(1, 12))),
-    )
 
     def reference(u: float, v: float, f: float) -> float:
-        return float((np.floor(u * f) + np.floor(v * f)) % 2)
+        return float(texture.checker(np.float64(u * f), np.float64(v * f)))
 
+    cases = [
+        Case((0.05, 0.05, 10.0)),
+        Case((0.15, 0.05, 10.0)),
+        Case((0.3, 0.7, 4.0)),
+        Case((-0.05, 0.05, 10.0), "negative u"),
+        Case((0.3, -0.4, 4.0), "negative v"),
+        Case((-0.3, -0.7, 4.0), "negative u"),
+        *_random(6, 30, lambda r: (r.uniform(-1, 1), r.uniform(-1, 1), float(r.integers(1, 12)))),
+    ]
     return _judge(
         "checker",
         student,
@@ -329,42 +725,122 @@ def checker(student: Callable[[float, float, float], float]) -> Verdict:
         cases,
         "u, v, frequency",
         [
-            (lambda u, v, f: 1 - reference(u, v, f), "black and white are swapped"),
-            (lambda u, v, f: reference(u, v, 1), "scale u and v by the frequency first"),
+            (lambda u, v, f: 1 - reference(u, v, f), "black and white are swapped."),
+            (lambda u, v, f: reference(u, v, 1), "scale u and v by the frequency first."),
             (
                 lambda u, v, f: float((round(u * f) + round(v * f)) % 2),
-                "use floor, not round: a check runs from one whole number to the next",
+                "use floor, not round: a check runs from one whole number to the next.",
+            ),
+            (
+                lambda u, v, f: float((int(u * f) + int(v * f)) % 2),
+                "int() rounds towards zero, so it is wrong for negative u or v (the checks "
+                "either side of 0 come out the same colour): use math.floor.",
             ),
         ],
     )
 
 
-def clip_barycentrics(student: Callable[..., Sequence[float]]) -> Verdict:
-    """Lesson 7: ``student(b0, b1, b2, w0, w1, w2)`` turns screen-space barycentrics into the
-    perspective-correct ones (OpenGL 4.6 eq. 14.9), returning three numbers.
+def affine_error(student: Callable[[float, float, float, float], float]) -> Verdict:
+    """Lesson 6: ``student(s, w1, w2, frequency)`` is how far off, in texels, the affine texture
+    coordinate is at screen parameter s along an edge whose u runs from 0 at its end at depth w1
+    to 1 at its end at depth w2, on a board of ``frequency`` checks per unit of u.
+
+    Compared with ``frequency * |lerp_affine(0, 1, s) - lerp_perspective(0, 1, w1, w2, s)|``,
+    the one-dimensional case of :func:`interp.texel_error`.
 
     Examples
     --------
-    >>> def fix(b0, b1, b2, w0, w1, w2):
-    ...     q = (b0 / w0, b1 / w1, b2 / w2)
-    ...     return [x / sum(q) for x in q]
-    >>> clip_barycentrics(fix)
-    ✓ clip_barycentrics: right on all 30 cases.
+    >>> affine_error(lambda s, w1, w2, f: f * abs(s - s * w1 / (s * w1 + (1 - s) * w2)))
+    ✓ affine_error: right on all 28 cases, among them s = 0, s = 1 and w1 = w2.
+    >>> affine_error(lambda s, w1, w2, f: abs(s - s * w1 / (s * w1 + (1 - s) * w2)))
+    ✗ that is the error in u; ...
     """
 
-    def draw(r: np.random.Generator) -> Case:
-        b = r.dirichlet([1, 1, 1])
-        return (*b, *r.uniform(0.2, 20, 3))
+    def error_in_u(s: float, w1: float, w2: float) -> float:
+        return abs(lerp.lerp_affine(0.0, 1.0, s) - lerp.lerp_perspective(0.0, 1.0, w1, w2, s))
 
-    cases = _cases(np.random.default_rng(7), 30, draw)
+    def reference(s: float, w1: float, w2: float, f: float) -> float:
+        return f * error_in_u(s, w1, w2)
+
+    cases = [
+        Case((0.5, 1.0, 3.0, 8.0)),
+        Case((0.5, 3.0, 1.0, 8.0)),
+        Case((0.0, 1.0, 3.0, 8.0), "s = 0"),
+        Case((1.0, 1.0, 3.0, 8.0), "s = 1"),
+        Case((0.3, 2.0, 2.0, 8.0), "w1 = w2"),
+        *_random(
+            8,
+            23,
+            lambda r: (r.uniform(0, 1), r.uniform(0.2, 20), r.uniform(0.2, 20), r.integers(1, 33)),
+        ),
+    ]
+    signed = "the error is a distance, whichever way the texture slid: take the absolute value."
+    return _judge(
+        "affine_error",
+        student,
+        reference,
+        cases,
+        "s, w1, w2, frequency",
+        [
+            (
+                lambda s, w1, w2, f: error_in_u(s, w1, w2),
+                "that is the error in u; one texel is 1/frequency of u, so multiply by the "
+                "frequency.",
+            ),
+            (
+                lambda s, w1, w2, f: f * (s - lerp.t_from_s(s, w1, w2)),
+                signed,
+            ),
+            (
+                lambda s, w1, w2, f: f * (lerp.t_from_s(s, w1, w2) - s),
+                signed,
+            ),
+            (
+                lambda s, w1, w2, f: f * abs(s - lerp.s_from_t(s, w1, w2)),
+                "your function gives the error with w1 and w2 swapped, which is also what "
+                "using s_from_t(s, ...) where t_from_s(s, ...) belongs gives (the same numbers). "
+                "The pixel at s shows the point t = t_from_s(s, w1, w2).",
+            ),
+        ],
+    )
+
+
+# --- lesson 7 --------------------------------------------------------------------------------
+
+
+def clip_barycentrics(student: Callable[..., Sequence[float]]) -> Verdict:
+    """Lesson 7: ``student(b0, b1, b2, w0, w1, w2)`` turns a pixel's screen-space barycentrics
+    into the perspective-correct weights of OpenGL 4.6 eq. 14.9, returning three numbers
+    (:func:`interp.perspective_weights`).
+
+    Examples
+    --------
+    >>> def weights(b0, b1, b2, w0, w1, w2):
+    ...     q = (b0 / w0, b1 / w1, b2 / w2)
+    ...     return [x / sum(q) for x in q]
+    >>> clip_barycentrics(weights)
+    ✓ clip_barycentrics: right on all 24 cases, among them a corner and all w equal.
+    >>> clip_barycentrics(lambda b0, b1, b2, w0, w1, w2: (x for x in (b0, b1, b2)))
+    ✗ your function returned a generator: ...
+    """
+
+    def draw(r: np.random.Generator) -> tuple[float, ...]:
+        return (*r.dirichlet([1, 1, 1]), *r.uniform(0.2, 20, 3))
+
+    cases = [
+        Case((0.5, 0.5, 0.0, 1.0, 3.0, 2.0)),
+        Case((0.25, 0.25, 0.5, 1.0, 2.0, 4.0)),
+        Case((1.0, 0.0, 0.0, 2.0, 5.0, 1.0), "a corner"),
+        Case((0.2, 0.3, 0.5, 3.0, 3.0, 3.0), "all w equal"),
+        *_random(7, 20, draw),
+    ]
 
     def reference(b0, b1, b2, w0, w1, w2):
-        q = np.array([b0 / w0, b1 / w1, b2 / w2])
-        return q / q.sum()
+        return tuple(barycentric.perspective_weights([b0, b1, b2], [w0, w1, w2]))
 
-    def times_w(b0, b1, b2, w0, w1, w2):
-        q = np.array([b0 * w0, b1 * w1, b2 * w2])
-        return q / q.sum()
+    def weighted(b, w):
+        q = np.asarray(b) * np.asarray(w)
+        return tuple(q / q.sum())
 
     return _judge(
         "clip_barycentrics",
@@ -374,13 +850,20 @@ def clip_barycentrics(student: Callable[..., Sequence[float]]) -> Verdict:
         "b0, b1, b2, w0, w1, w2",
         [
             (
-                lambda b0, b1, b2, *w: [b0, b1, b2],
-                "those are the screen-space barycentrics unchanged: weight each by 1/w_i",
+                lambda b0, b1, b2, *w: (b0, b1, b2),
+                "those are the screen-space barycentrics unchanged (noperspective), right only "
+                "when w0 = w1 = w2: weight each by 1/w_i.",
             ),
             (
-                lambda b0, b1, b2, w0, w1, w2: [b0 / w0, b1 / w1, b2 / w2],
-                "divide by their sum, so that the weights add up to 1",
+                lambda b0, b1, b2, w0, w1, w2: (b0 / w0, b1 / w1, b2 / w2),
+                "those are the b_i / w_i: now divide them by their sum, so that the weights add "
+                "up to 1.",
             ),
-            (times_w, "divide each by its w_i, do not multiply"),
+            (
+                lambda b0, b1, b2, w0, w1, w2: weighted((b0, b1, b2), (w0, w1, w2)),
+                "you weighted each b_i by w_i; it is 1/w_i that is linear on the screen, so "
+                "divide each by its w_i.",
+            ),
         ],
+        convert=_triple,
     )
