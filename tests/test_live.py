@@ -19,6 +19,7 @@ STEPS = {
     "st_mapping": ("w2", 0.7),
     "depth": ("w2", 3.0),
     "attributes": ("w2", 1.3),
+    "approximations": ("pitch", 0.5),  # small steps: the decades of its log axes stay
 }
 
 
@@ -40,10 +41,7 @@ def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
         blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
         app.figure.canvas.draw()
         np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
-    if name == "approximations":  # its annotations come and go: always a full redraw
-        assert blitter.dynamic is None and blitter.blits == 0
-    else:
-        assert blitter.blits >= 1, "the blit path was never taken"
+    assert blitter.blits >= 1, "the blit path was never taken"
 
 
 def test_changed_limits_redraw_the_whole_figure():

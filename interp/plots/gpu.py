@@ -116,7 +116,23 @@ class ApproximationLab(Plot):
         (self.tessellation,) = ax.plot(
             [], [], **{**AFFINE, "label": "tessellation: n x n quads, affine"}
         )
-        self.notes: list = []
+        # One label per setting, made once and moved (or hidden) by redraw.
+        self.notes = {
+            (line, setting): ax.annotate(
+                template.format(setting),
+                (1, 1),
+                xytext=(4, 2),
+                textcoords="offset points",
+                fontsize="x-small",
+                color=line.get_color(),
+                visible=False,
+            )
+            for line, settings, template in (
+                (self.spans, approximation.SPANS, "N={:d}"),
+                (self.tessellation, approximation.QUADS, "n={:d}"),
+            )
+            for setting in settings
+        }
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("divides per pixel drawn")
@@ -132,37 +148,41 @@ class ApproximationLab(Plot):
         size = (int(p["width"]), int(p["height"]), float(p["frequency"]))
         spans = approximation.span_costs(p["camera"], *size)
         tess = approximation.tessellation_costs(p["camera"], *size)
-        for note in self.notes:
-            note.remove()
-        self.notes = []
-        for line, costs, label in (
-            (self.spans, spans, "N={:d}"),
-            (self.tessellation, tess, "n={:d}"),
-        ):
+        for note in self.notes.values():
+            note.set_visible(False)
+        for line, costs in ((self.spans, spans), (self.tessellation, tess)):
             shown = costs.mean_error > 0  # exact settings (N = 1) have no place on a log axis
             x, y, settings = (
                 a[shown] for a in (costs.divides_per_pixel, costs.mean_error, costs.setting)
             )
             line.set_data(x, y)
             for xi, yi, setting in zip(x, y, settings, strict=True):
-                self.notes.append(
-                    self.ax.annotate(
-                        label.format(int(setting)),
-                        (xi, yi),
-                        xytext=(4, 2),
-                        textcoords="offset points",
-                        fontsize="x-small",
-                        color=line.get_color(),
-                    )
-                )
+                note = self.notes[line, int(setting)]
+                note.xy = (xi, yi)
+                note.set_visible(True)
         xs = np.concatenate([spans.divides_per_pixel, tess.divides_per_pixel])
         ys = np.concatenate([spans.mean_error, tess.mean_error])
         keep = (xs > 0) & (ys > 0)
-        if keep.any():
-            self.ax.set_xlim(xs[keep].min() / 2, xs[keep].max() * 3)
-            self.ax.set_ylim(ys[keep].min() / 3, ys[keep].max() * 3)
+        if keep.any():  # whole decades, with room for the labels: small steps keep them
+            self.ax.set_xlim(*_decades(xs[keep].min() / 1.5, xs[keep].max() * 3))
+            self.ax.set_ylim(*_decades(ys[keep].min() / 1.5, ys[keep].max() * 1.5))
             self.ax.set_title("")
         else:  # nothing drawn, or nothing to correct: fixed axes, so history cannot show
             self.ax.set_xlim(*self.EMPTY_X)
             self.ax.set_ylim(*self.EMPTY_Y)
             self.ax.set_title("no error to plot: the plane is out of view or exact")
+
+    @property
+    def dynamic(self) -> list:
+        return [self.spans, self.tessellation, *self.notes.values(), self.ax.title]
+
+
+def _decades(low: float, high: float) -> tuple[float, float]:
+    """The powers of ten just outside ``[low, high]``.
+
+    Examples
+    --------
+    >>> _decades(0.03, 2.0)
+    (0.01, 10.0)
+    """
+    return float(10.0 ** np.floor(np.log10(low))), float(10.0 ** np.ceil(np.log10(high)))

@@ -374,8 +374,8 @@ class GapPlot(Plot):
         self.measured_peak.set_data([self.measured[0]], [self.measured[1]])
         self.ax.set_ylim(0, nice_ceiling(max(0.05, 1.1 * self.derived[1])))
         self.ax.set_title(
-            f"derived: s* = √w2/(√w1+√w2) = {self.derived[0]:.3f}, gap {self.derived[1]:.3f}\n"
-            f"sampled: s = {self.measured[0]:.3f}, gap {self.measured[1]:.3f}",
+            f"derived peak: s* = {self.derived[0]:.3f}, gap {self.derived[1]:.3f}\n"
+            f"largest sample: s = {self.measured[0]:.3f}, gap {self.measured[1]:.3f}",
             fontsize="small",
         )
 
