@@ -85,6 +85,12 @@ class LessonFigure(Plot):
         """Make the plots on ``figure``."""
         raise NotImplementedError
 
+    def readout(self) -> str:
+        """The figure's key result in one or two plain sentences, true for the current
+        parameters (e.g. "M, the middle of AB, shows at s = 0.800 of the image."): shown as
+        live text beside the app, for screen readers and for copying. Empty if there is none."""
+        return ""
+
     @property
     def dynamic(self) -> list[Artist] | None:
         """Every artist the figure's plots change (see :attr:`Plot.dynamic`); None if one of
