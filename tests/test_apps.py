@@ -239,20 +239,24 @@ def test_static_display_shows_the_figure_once_and_updates_it(monkeypatch):
     shown = []
 
     class Handle:
-        def update(self, obj):
-            shown.append(("update", obj))
+        def update(self, obj, metadata=None):
+            shown.append(("update", obj, metadata))
 
-    def fake_display(obj, display_id=False):
-        shown.append(("display", obj))
+    def fake_display(obj, display_id=False, metadata=None):
+        shown.append(("display", obj, metadata))
         return Handle() if display_id else None
 
     monkeypatch.setattr("interp.apps._app.display", fake_display)
     app = apps.st_mapping()
     app._ipython_display_()
-    assert [kind for kind, _ in shown] == ["display", "display"]
-    assert shown[0][1] is app.figure and isinstance(shown[1][1], widgets.Widget)
+    assert [kind for kind, *_ in shown] == ["display", "display", "display"]
+    assert shown[0][1] is app.figure and isinstance(shown[2][1], widgets.Widget)
+    alt = shown[0][2]["image/png"]["alt"]
+    assert alt.startswith(app.plot.title) and app.plot.readout() in alt  # the picture's alt text
+    assert shown[1][1]._repr_html_() == app.readout.value  # the result as text
     app.controls["w2"].value = 7.0
-    assert shown[-1] == ("update", app.figure)
+    updates = [entry for entry in shown if entry[0] == "update"]
+    assert updates[0][1] is app.figure and "alt" in updates[0][2]["image/png"]
 
 
 def control_values(control):

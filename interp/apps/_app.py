@@ -17,11 +17,12 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
+from html import escape
 
 import ipywidgets as widgets
 import matplotlib.pyplot as plt
 import numpy as np
-from IPython.display import display
+from IPython.display import HTML, display
 
 from interp._allocator import keep_freed_memory
 from interp.apps._live import Blitter, Coalescer, cheap_frames
@@ -88,6 +89,9 @@ class App:
                 widget.style.font_size = "18px"
             widget.observe(self._changed, names="value")
         self._handle = None  # the figure is drawn already; displaying it shows that drawing
+        #: The figure's key result as text (a live region: screen readers announce changes).
+        self.readout = widgets.HTML(self._readout_html())
+        self._readout_handle = None
         self.blitter = Blitter(self.figure, self.plot.dynamic)
         self.coalescer = Coalescer(self.refresh)
         if self.live:
@@ -115,7 +119,10 @@ class App:
         if self.live:
             self.blitter.draw()  # at once: no round trip through the browser first
         elif self._handle is not None:
-            self._handle.update(self.figure)
+            self._handle.update(self.figure, metadata=self._image_metadata())
+        self.readout.value = self._readout_html()
+        if self._readout_handle is not None:
+            self._readout_handle.update(HTML(self.readout.value))
 
     @property
     def live(self) -> bool:
@@ -133,15 +140,27 @@ class App:
         if self.live:
             self.figure.canvas.header_visible = False
             self.figure.canvas.toolbar_position = "left"
-            return widgets.VBox([panel, self.figure.canvas])
+            return widgets.VBox([panel, self.figure.canvas, self.readout])
         return panel
 
     def _ipython_display_(self) -> None:
         if self.live:
             display(self.widget)
-        else:
-            self._handle = display(self.figure, display_id=True)
+        else:  # a picture with alt text, the result as text, then the controls
+            self._handle = display(self.figure, display_id=True, metadata=self._image_metadata())
+            self._readout_handle = display(HTML(self.readout.value), display_id=True)
             display(self.widget)
+
+    def _readout_html(self) -> str:
+        text = self.plot.readout()
+        if not text:
+            return ""
+        return f'<p class="interp-readout" role="status" aria-live="polite">{escape(text)}</p>'
+
+    def _image_metadata(self) -> dict:
+        """Alt text for the static picture: the figure's title and its key result."""
+        alt = f"{self.plot.title}. {self.plot.readout()}".strip()
+        return {"image/png": {"alt": alt}}
 
     _holding_depth = 0
 
