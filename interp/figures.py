@@ -151,6 +151,12 @@ def _settle_layout(figure: matplotlib.figure.Figure) -> None:
     """
     figure.get_layout_engine().execute(figure)
     figure.set_layout_engine("none")
+    subfigures = list(figure.subfigs)
+    while subfigures:  # subfigures (a handout page's title, figure and caption) first
+        subfigure = subfigures.pop()
+        box = subfigure.bbox_relative
+        box.p0, box.p1 = np.round(box.p0, 6), np.round(box.p1, 6)
+        subfigures += subfigure.subfigs
     for ax in figure.axes:
         ax.set_position(np.round(ax.get_position(original=True).bounds, 6))
 
