@@ -96,6 +96,12 @@ class App:
         self.coalescer = Coalescer(self.refresh)
         if self.live:
             cheap_frames(self.figure.canvas)
+            # ipympl's view redraws its last image whenever the widget's size changes; a view
+            # that has not received an image yet fails there ("HTMLImageElement ... 'broken'
+            # state") and may stay blank. So the size is right before any view exists, and
+            # each view that reports ready gets a full frame at once.
+            self.figure.canvas.manager.resize(*self.figure.bbox.size)
+            self.figure.canvas.on_msg(self._canvas_message)
 
     @property
     def values(self) -> dict[str, object]:
@@ -123,6 +129,12 @@ class App:
         self.readout.value = self._readout_html()
         if self._readout_handle is not None:
             self._readout_handle.update(HTML(self.readout.value))
+
+    def _canvas_message(self, canvas: object, content: dict, buffers: list) -> None:
+        """After ipympl's own handler: send a fresh full frame to a view that just appeared."""
+        if content.get("type") == "initialized":
+            self.figure.canvas._force_full = True
+            self.blitter.draw()
 
     @property
     def live(self) -> bool:
