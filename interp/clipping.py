@@ -3,8 +3,12 @@
 Clipping happens before the perspective divide, where everything is still linear: a point on an
 edge at clip-space parameter t has clip position and ``smooth`` attributes ``lerp(t)``. That
 is why clipped triangles stay perspective-correct (OpenGL 4.6, section 13.7.1). A
-``noperspective`` attribute must instead vary linearly on the screen, so a new vertex takes it at
-the screen parameter ``s = s_from_t(t, w_in, w_out)`` of the same point.
+``noperspective`` attribute must instead vary linearly on the screen: a new vertex takes it at
+the screen parameter ``s = s_from_t(t, w_in, w_out)`` of the same point. Equivalently, and
+better for a computer: an attribute ``a`` linear on the screen, times ``w``, is linear in clip
+space (``w (alpha x/w + beta y/w + gamma) = alpha x + beta y + gamma w``). So ``a w`` is clipped
+like a ``smooth`` attribute and divided by w at the end; that stays right even where an edge
+passes through the eye's plane ``w = 0`` on its way to being cut away, where s has no value.
 
 The near and far planes (``-w <= z <= w``) come first; together they keep every vertex at
 ``w >= 0``, in front of the eye. The side planes then keep the window coordinates small.
@@ -17,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from interp.lerp import _s_from_t
+from interp.lerp import _lerp
 
 #: The six planes of the view volume as rows ``n``: a clip-space point P is inside when
 #: ``n @ P >= 0``. Near and far first.
@@ -41,12 +45,14 @@ class ClippedTriangles:
     Attributes
     ----------
     clip : (T, 3, 4) array
-        Clip-space positions.
+        Clip-space positions, each triangle scaled by a power of two so that its largest
+        coordinate lies in [1/2, 1): the same points (clip coordinates are homogeneous), kept
+        far from underflow.
     smooth : (T, 3, K) array
         Attributes for perspective-correct (``smooth``) interpolation.
     noperspective : (T, 3, K) array
         Attributes for screen-linear (``noperspective``) interpolation. Equal to ``smooth``
-        at the input vertices; they differ only at vertices made by clipping.
+        at the input vertices (to rounding); they differ at vertices made by clipping.
     source : (T,) int array
         Which input triangle each came from, in draw order.
     """
@@ -84,25 +90,41 @@ def clip_triangles(
     -------
     ClippedTriangles
         The visible pieces, in the input's draw order. A triangle inside the view volume comes out
-        unchanged; one outside is dropped; one crossing a plane comes out as one or more pieces.
+        unchanged (up to a power-of-two scale); one outside is dropped; one crossing a plane comes
+        out as one or more pieces.
 
     Examples
     --------
     >>> clip = np.array([[0., 0, 0, 1], [0, 0, -3, 1], [1, 0, 0, 1]])   # vertex 1 beyond near
     >>> pieces = clip_triangles(clip, np.array([[0.], [1], [0]]), np.array([[0, 1, 2]]))
-    >>> len(pieces), float(pieces.clip[0, :, 2].min())   # a quad: two triangles, z >= -w = -1
+    >>> ndc_z = pieces.clip[..., 2] / pieces.clip[..., 3]
+    >>> len(pieces), float(ndc_z.min())   # a quad: two triangles, cut at z = -w
     (2, -1.0)
     """
-    soup = ClippedTriangles(
-        clip[triangles],
-        attributes[triangles],
-        attributes[triangles],
-        np.arange(len(triangles)),
-    )
-    for plane in PLANES:
+    positions = _normalized(clip[triangles])
+    a = attributes[triangles]
+    soup = ClippedTriangles(positions, a, a * positions[:, :, 3:], np.arange(len(triangles)))
+    for plane in PLANES:  # noperspective holds a w meanwhile: linear in clip space
         soup = _clip_against(soup, plane)
-    in_front = np.all(soup.clip[:, :, 3] > 0, axis=1)  # drops only degenerate pieces at the eye
-    return soup.take(in_front)
+    soup = soup.take(np.all(soup.clip[:, :, 3] > 0, axis=1))  # drops degenerate pieces at the eye
+    return ClippedTriangles(
+        _normalized(soup.clip),
+        soup.smooth,
+        soup.noperspective / soup.clip[:, :, 3:],
+        soup.source,
+    )
+
+
+def _normalized(clip: np.ndarray) -> np.ndarray:
+    """Each triangle (T, 3, 4) scaled by a power of two to a largest coordinate in [1/2, 1).
+
+    Clip coordinates are homogeneous: scaling a triangle's three vertices by one positive number
+    changes neither its image nor its interpolation, and scaling by a power of two is exact. It
+    keeps the arithmetic as precise for a triangle of size 1e-300 (or a piece cut off right at
+    the eye) as for one of size 1.
+    """
+    _, exponent = np.frexp(np.abs(clip).max(axis=(1, 2), initial=0.0))
+    return np.ldexp(clip, -exponent[:, None, None])
 
 
 def _clip_against(soup: ClippedTriangles, plane: np.ndarray) -> ClippedTriangles:
@@ -138,6 +160,7 @@ def _clip_against(soup: ClippedTriangles, plane: np.ndarray) -> ClippedTriangles
 
 
 _FIELDS = ("clip", "smooth", "noperspective", "source")
+_EPSILON = np.finfo(np.float64).eps
 
 
 @dataclass(frozen=True)
@@ -172,24 +195,45 @@ def _rolled(soup: ClippedTriangles, first: np.ndarray, distance: np.ndarray) -> 
 def _cut(inner: _Vertex, outer: _Vertex) -> _Vertex:
     """The point where edge inner -> outer meets the plane.
 
-    Always computed from the inside vertex towards the outside one, so two triangles sharing
-    the edge make bit-identical vertices and no crack can open between them.
+    It lies at ``t = d_in / (d_in - d_out)`` from the inside vertex (``d`` the plane distances,
+    ``d_in >= 0 > d_out``). Close to 1, a float t cannot say how close: for an outer vertex a
+    hair outside the plane, ``1 - 1e-17`` rounds to 1 and the cut would land on the outer vertex
+    itself. So the point is interpolated from whichever end is nearer, by that end's own
+    parameter computed directly: t from the inner vertex, or ``1 - t = -d_out / (d_in - d_out)``
+    from the outer one. Both are in [0, 1/2] and exact to rounding, however small.
+
+    The same (inner, outer) pair always gives the same bits, so two triangles sharing the edge
+    make identical vertices and no crack can open between them.
     """
-    t = inner.distance / (inner.distance - outer.distance)  # in [0, 1): inner.distance >= 0 > outer
-    point = inner.clip + t[:, None] * (outer.clip - inner.clip)
-    # noperspective attributes are linear on the screen: use the screen parameter of the point,
-    # s_from_t(t, w_in, w_out). The outer vertex may be behind the eye (w <= 0), where the screen
-    # parameter means nothing; so may the point itself, only when the piece is degenerate (it is
-    # dropped later), and then s = t stands in.
-    in_front = point[:, 3] > 0  # then (1 - t) w_in + t w_out, the point's w, is > 0
-    w_in, w_out = (np.where(in_front, v.clip[:, 3], 1.0) for v in (inner, outer))
-    s = _s_from_t(t, w_in, w_out)  # = t where w_in = w_out = 1 stand in
+    span = inner.distance - outer.distance  # > 0, and no cancellation: d_in >= 0 > d_out
+    from_inner = inner.distance <= -outer.distance  # t <= 1/2
+    near, far = _either(from_inner, inner, outer), _either(from_inner, outer, inner)
+    f = np.where(from_inner, inner.distance, -outer.distance) / span  # in [0, 1/2]
+    point = _lerp(near.clip, far.clip, f[:, None])
+    # Where the point's w is lost in rounding (the edge crosses the eye's plane w = 0 right
+    # there), make it exactly 0: such a point has no place on the screen, and a later plane cuts
+    # it away, or drops the piece as degenerate.
+    w_near, w_far = near.clip[:, 3], far.clip[:, 3]
+    rounding = 4 * _EPSILON * (np.abs(w_near) + f * np.abs(w_far))
+    point[:, 3] = np.where(np.abs(point[:, 3]) > rounding, point[:, 3], 0.0)
     return _Vertex(
         point,
-        inner.smooth + t[:, None] * (outer.smooth - inner.smooth),
-        inner.noperspective + s[:, None] * (outer.noperspective - inner.noperspective),
+        _lerp(near.smooth, far.smooth, f[:, None]),
+        _lerp(near.noperspective, far.noperspective, f[:, None]),  # a w, linear in clip space
         inner.source,
-        np.zeros_like(t),
+        np.zeros_like(f),
+    )
+
+
+def _either(first: np.ndarray, a: _Vertex, b: _Vertex) -> _Vertex:
+    """Vertex a where ``first``, else b (the distance is not needed)."""
+    column = first[:, None]
+    return _Vertex(
+        np.where(column, a.clip, b.clip),
+        np.where(column, a.smooth, b.smooth),
+        np.where(column, a.noperspective, b.noperspective),
+        a.source,
+        a.distance,
     )
 
 
