@@ -494,7 +494,7 @@ def fragment_footprints(
         da = np.einsum("idt,tik->dkt", db, pieces.noperspective)  # (2, K, T)
         return np.take(np.abs(da).sum(axis=0), piece, axis=1)
 
-    one_over_w = 1.0 / pieces.clip[:, :, 3]  # (T, 3)
+    one_over_w = _one_over_w(pieces)  # (T, 3)
     a_over_w = pieces.smooth * one_over_w[..., None]
     dN = np.einsum("idt,tik->dkt", db, a_over_w)  # steps of N = lerp(a/w), (2, K, T)
     dD = np.einsum("idt,ti->dt", db, one_over_w)  # steps of D = lerp(1/w), (2, T)
@@ -515,10 +515,23 @@ def _per_fragment(per_vertex: np.ndarray, piece: np.ndarray) -> np.ndarray:
     return np.take(np.moveaxis(per_vertex, 0, 2), piece, axis=2)
 
 
+def _one_over_w(pieces: ClippedTriangles) -> np.ndarray:
+    """``1/w`` of each vertex (T, 3), times a number per triangle that keeps it in (0, 1].
+
+    Perspective-correct interpolation is homogeneous in 1/w: ``lerp(a/w) / lerp(1/w)`` does not
+    change when every ``1/w`` of a triangle is multiplied by the same number. Multiplying by the
+    triangle's smallest w gives ``w_min / w`` in (0, 1]: no overflow, even for a vertex at w =
+    1e-310. (Floored at 2**-1000, which changes nothing unless one vertex is 1e300 times
+    nearer the eye than another.)
+    """
+    w = pieces.clip[:, :, 3]
+    return np.maximum(w.min(axis=1, keepdims=True) / w, 2.0**-1000)
+
+
 def _a_over_w_and_one_over_w(frags: Fragments) -> tuple[np.ndarray, np.ndarray]:
-    """What each vertex hands on for perspective-correct interpolation: a/w and 1/w."""
+    """What each vertex hands on for perspective-correct interpolation: a/w and 1/w (scaled)."""
     pieces = frags.clipped
-    one_over_w = 1.0 / pieces.clip[:, :, 3]
+    one_over_w = _one_over_w(pieces)
     per_vertex = np.concatenate([pieces.smooth * one_over_w[..., None], one_over_w[..., None]], 2)
     per_vertex = _per_fragment(per_vertex, frags.piece)  # (3, K + 1, P): one gather
     return per_vertex[:, :-1], per_vertex[:, -1]

@@ -74,6 +74,21 @@ def test_triangles_of_any_size_match_the_exact_ray_cast(seed):
         compare(clip, rng.uniform(0, 1, (3, 2)), ONE, 16, 16)
 
 
+def test_scaling_a_triangle_by_a_power_of_two_changes_no_bit():
+    # Clip coordinates are homogeneous; scaled by 2**k a triangle must draw the same image,
+    # bit for bit, down into subnormal numbers (few mantissa bits keep the scaling exact).
+    rng = np.random.default_rng(7)
+    for _ in range(10):
+        clip = np.round(near_eye_triangle(rng, -3, -1) * 64) / 64
+        clip[rng.integers(3), 3] = 2.0**-9  # a vertex close to the eye
+        uv = rng.uniform(0, 1, (3, 2))
+        expected = interp.rasterize(clip, uv, ONE, 16, 16)
+        for k in (-1060, -600, -40, 30):
+            values, covered = interp.rasterize(np.ldexp(clip, k), uv, ONE, 16, 16)
+            np.testing.assert_array_equal(values, expected[0])
+            np.testing.assert_array_equal(covered, expected[1])
+
+
 def test_triangles_sharing_a_cut_edge_leave_no_crack():
     # A fan around a vertex next to the eye (in front of it or behind), whose image lies inside
     # the ring: every edge through it is cut where floats are weakest. Neighbours must cut their
