@@ -62,6 +62,16 @@ def positive_int(value: object, name: str, cap: int = MAX_SIZE) -> int:
     return value
 
 
+def integer_in(value: object, name: str, low: int, high: int) -> int:
+    """Return ``value`` as an int in ``[low, high]``, or raise naming ``name``."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__}")
+    value = int(value)
+    if not low <= value <= high:
+        raise ValueError(f"{name} must be an integer in [{low}, {high}], got {value}")
+    return value
+
+
 def float_array(value: object, name: str, shape: Sequence[int | None] | None = None) -> np.ndarray:
     """Return ``value`` as a finite float64 array of the given shape (None = any length).
 

@@ -33,7 +33,7 @@ from interp.clipping import ClippedTriangles, clip_triangles
 SUBPIXELS = 256
 #: Interpolation modes: GLSL ``smooth``, GLSL ``noperspective``, and Quake-style spans.
 MODES = ("perspective", "affine", "subdivided")
-#: Bits of the fixed-point depth the depth test compares (GL's depth buffers have 24 or 32).
+#: Bits of the fixed-point depth the depth test compares by default (GL's buffers have 24).
 DEPTH_BITS = 40
 #: Most fragments handled at once; bounds memory when triangles overlap a lot.
 CHUNK = 1 << 22
@@ -49,6 +49,7 @@ def rasterize(
     height: int,
     mode: str = "perspective",
     span: int = 16,
+    depth_bits: int = DEPTH_BITS,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Draw triangles into an image of interpolated attributes, exactly as OpenGL would.
 
@@ -68,6 +69,13 @@ def rasterize(
         ``"subdivided"``: exact every ``span`` pixels along a row, affine in between.
     span : int
         For ``"subdivided"``: pixels between exact values (Quake used 16).
+    depth_bits : int
+        Bits of the fixed-point depth the depth test compares, in [16, 40]. Depths that round
+        to the same number tie, and the first drawn wins. The default, 40, resolves depths
+        closer than a GL depth buffer can. 24 (or less) behaves like a GL depth buffer of that
+        many bits: depth rounded to fixed point from float32, as llvmpipe does, so nearly
+        coplanar triangles tie where OpenGL's do (where they are not parallel to the screen,
+        OpenGL's own float32 rounding can still tip a few pixels either way).
 
     Returns
     -------
@@ -120,12 +128,17 @@ def rasterize(
     """
     mode = _checks.choice(mode, "mode", MODES)  # a bad mode fails before any work
     span = _checks.positive_int(span, "span")
-    frags = fragments(clip, attributes, triangles, width, height)
+    frags = fragments(clip, attributes, triangles, width, height, depth_bits)
     return interpolate(frags, mode, span), frags.covered
 
 
 def fragments(
-    clip: object, attributes: object, triangles: object, width: int, height: int
+    clip: object,
+    attributes: object,
+    triangles: object,
+    width: int,
+    height: int,
+    depth_bits: int = DEPTH_BITS,
 ) -> Fragments:
     """Clip, scan-convert and depth-test triangles; interpolate nothing yet.
 
@@ -139,6 +152,9 @@ def fragments(
         Vertex indices, in draw order. Both windings are drawn.
     width, height : int
         Image size in pixels, each in [1, 4096].
+    depth_bits : int
+        Bits of fixed-point depth the depth test compares, in [16, 40]; see
+        :func:`rasterize`.
 
     Returns
     -------
@@ -158,7 +174,8 @@ def fragments(
     clip, attributes, triangles = _check_scene(clip, attributes, triangles)
     width = _checks.positive_int(width, "width")
     height = _checks.positive_int(height, "height")
-    return _fragments(clip_triangles(clip, attributes, triangles), width, height)
+    depth_bits = _checks.integer_in(depth_bits, "depth_bits", 16, DEPTH_BITS)
+    return _fragments(clip_triangles(clip, attributes, triangles), width, height, depth_bits)
 
 
 def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> np.ndarray:
@@ -406,7 +423,9 @@ def _check_scene(
     return clip, attributes, triangles
 
 
-def _fragments(pieces: ClippedTriangles, width: int, height: int) -> Fragments:
+def _fragments(
+    pieces: ClippedTriangles, width: int, height: int, depth_bits: int = DEPTH_BITS
+) -> Fragments:
     window = viewport(pieces.clip, width, height)
     X = np.rint(window[..., 0] * SUBPIXELS).astype(np.int64)  # snap to the subpixel grid
     Y = np.rint(window[..., 1] * SUBPIXELS).astype(np.int64)
@@ -431,11 +450,11 @@ def _fragments(pieces: ClippedTriangles, width: int, height: int) -> Fragments:
     # Along a row everything is linear in the column x: per row item, a value at x = 0 and a
     # step per pixel. Barycentrics b_i = e_i / (2 area); window depth z_w = sum(b_i z_i).
     b_at_0, b_dx, b_dy = _barycentric_planes(window, rows, X, Y, area2)
-    z = window[..., 2].T  # (3, T)
+    z = window[..., 2].T if depth_bits > 24 else _float32_window_depth(pieces.clip).T  # (3, T)
     z_at_0 = np.sum(b_at_0 * z[:, rows.piece], axis=0)
     z_dx = np.sum(b_dx * z, axis=0)[rows.piece]
 
-    pixel, item = _depth_test(rows, z_at_0, z_dx, width, height)
+    pixel, item = _depth_test(rows, z_at_0, z_dx, width, height, depth_bits)
     x = pixel % width
     line = np.take(np.concatenate([b_at_0, b_dx[:, rows.piece]]), item, axis=1)  # one gather
     return Fragments(
@@ -583,13 +602,13 @@ def _reorder(pieces: ClippedTriangles, order: np.ndarray) -> ClippedTriangles:
 
 
 def _depth_test(
-    rows: _Rows, z_at_0: np.ndarray, z_dx: np.ndarray, width: int, height: int
+    rows: _Rows, z_at_0: np.ndarray, z_dx: np.ndarray, width: int, height: int, depth_bits: int
 ) -> tuple[np.ndarray, np.ndarray]:
     """Depth test ``GL_LESS`` against a buffer cleared to 1: the row item that wins each pixel.
 
     What a textbook writes per fragment, ``if z < depth[y, x]: depth[y, x] = z; drawn[y, x] =
     item``, for all fragments at once. Each fragment's key packs its depth, rounded to
-    DEPTH_BITS-bit fixed point (rounding keeps equal depths equal despite float rounding),
+    ``depth_bits``-bit fixed point (rounding keeps equal depths equal despite float rounding),
     above its row item's index, which grows in draw order. The smallest key per pixel
     (``np.minimum.at``) is then the nearest fragment, and among equally near ones the first
     drawn: as in OpenGL, where a later fragment must be strictly nearer to replace an earlier
@@ -598,11 +617,9 @@ def _depth_test(
     Returns the drawn pixels (flat image indices, row 0 at the top, ascending) and the row item
     that won each.
     """
-    item_bits = max(len(rows.piece).bit_length(), 1)
-    depth_bits = min(DEPTH_BITS, 62 - item_bits)
-    if depth_bits < 24:  # pragma: no cover - would need ~2**38 row items
-        raise ValueError("too many triangle rows for one image")
-    cleared = np.int64(1) << np.int64(depth_bits + item_bits)  # depth 1: nothing passes
+    item_bits = max(len(rows.piece).bit_length(), 1)  # at most 23: see MAX_ROWS
+    depth_bits = min(depth_bits, 62 - item_bits)  # so 40 bits may become 39
+    cleared = _fixed_point(np.array(1.0), depth_bits) << item_bits  # depth 1: nothing passes
     keys = np.full(width * height, cleared, dtype=np.int64)
 
     length = np.maximum(rows.x_last - rows.x_first + 1, 0)
@@ -616,11 +633,31 @@ def _depth_test(
         shift = first_fragment[start:stop] - first_fragment[start] - rows.x_first[start:stop]
         x = np.arange(item.size) - np.repeat(shift, n)
         z = np.repeat(z_at_0[start:stop], n) + np.repeat(z_dx[start:stop], n) * x
-        depth = np.rint(np.clip(z, 0.0, 1.0) * float(1 << depth_bits)).astype(np.int64)
+        depth = _fixed_point(z, depth_bits)
         np.minimum.at(keys, np.repeat(row_start[start:stop], n) + x, (depth << item_bits) | item)
         start = stop
     pixel = np.flatnonzero(keys < cleared)
     return pixel, keys[pixel] & ((1 << item_bits) - 1)
+
+
+def _fixed_point(z: np.ndarray, bits: int) -> np.ndarray:
+    """Window depth z in [0, 1] as an integer: ``round(z 2**bits)`` (interp's own depth).
+
+    Up to 24 bits, like a GL depth buffer of that many bits, and as llvmpipe computes it:
+    ``round(z (2**bits - 1))`` in float32, from z as a float32.
+    """
+    z = np.clip(z, 0.0, 1.0)
+    if bits <= 24:
+        return np.rint(z.astype(np.float32) * np.float32((1 << bits) - 1)).astype(np.int64)
+    return np.rint(z * float(1 << bits)).astype(np.int64)
+
+
+def _float32_window_depth(clip: np.ndarray) -> np.ndarray:
+    """Window depth of each vertex (T, 3) as a GL pipeline computes it in float32:
+    ``(z * (1 / w)) * 0.5 + 0.5``. Used with a GL-sized depth buffer, whose ties it decides."""
+    z, w = clip[..., 2].astype(np.float32), clip[..., 3].astype(np.float32)
+    half = np.float32(0.5)
+    return ((z * (np.float32(1) / w)) * half + half).astype(np.float64)
 
 
 # Interpolation: what each vertex hands on
