@@ -21,7 +21,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from interp import _checks
 from interp.lerp import _lerp
+
+#: Clip coordinates and attributes larger than this in magnitude are surely a mistake.
+MAX_COORDINATE = _checks.MAX_MAGNITUDE
 
 #: The six planes of the view volume as rows ``n``: a clip-space point P is inside when
 #: ``n @ P >= 0``. Near and far first.
@@ -62,6 +66,24 @@ class ClippedTriangles:
     noperspective: np.ndarray
     source: np.ndarray
 
+    def __post_init__(self) -> None:  # shapes only: made by clip_triangles, often
+        source = self.source
+        if not (isinstance(source, np.ndarray) and source.dtype.kind in "iu" and source.ndim == 1):
+            raise TypeError("source must be a (T,) int array: which input triangle each came from")
+        T = len(source)
+        expected = {"clip": (T, 3, 4), "smooth": (T, 3, None), "noperspective": (T, 3, None)}
+        for name, shape in expected.items():
+            array = getattr(self, name)
+            if (
+                not isinstance(array, np.ndarray)
+                or array.dtype.kind != "f"
+                or array.ndim != 3
+                or any(n is not None and n != m for n, m in zip(shape, array.shape, strict=True))
+            ):
+                raise TypeError(f"{name} must be a float array of shape (T, 3, ...) = {shape}")
+        if self.smooth.shape != self.noperspective.shape:
+            raise TypeError("smooth and noperspective must have the same shape")
+
     def __len__(self) -> int:
         return len(self.source)
 
@@ -72,19 +94,18 @@ class ClippedTriangles:
         )
 
 
-def clip_triangles(
-    clip: np.ndarray, attributes: np.ndarray, triangles: np.ndarray
-) -> ClippedTriangles:
+def clip_triangles(clip: object, attributes: object, triangles: object) -> ClippedTriangles:
     """Clip indexed triangles against the view volume.
 
     Parameters
     ----------
-    clip : (N, 4) float array
-        Clip-space vertex positions.
-    attributes : (N, K) float array
-        Vertex attributes.
-    triangles : (M, 3) int array
-        Vertex indices, checked by the caller.
+    clip : (N, 4) array_like
+        Clip-space vertex positions, coordinates in [-1e12, 1e12] (any finite value there,
+        however small).
+    attributes : (N, K) array_like
+        Vertex attributes, values in [-1e12, 1e12].
+    triangles : (M, 3) array_like of int
+        Vertex indices.
 
     Returns
     -------
@@ -101,16 +122,50 @@ def clip_triangles(
     >>> len(pieces), float(ndc_z.min())   # a quad: two triangles, cut at z = -w
     (2, -1.0)
     """
+    return _clip_triangles(*_check_scene(clip, attributes, triangles))
+
+
+def _check_scene(
+    clip: object, attributes: object, triangles: object
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The checks :func:`clip_triangles`, :func:`interp.rasterize` and friends share."""
+    clip = _checks.float_array(clip, "clip", (None, 4))
+    if clip.size and np.abs(clip).max() > MAX_COORDINATE:
+        raise ValueError(f"clip must hold coordinates of magnitude at most {MAX_COORDINATE:g}")
+    attributes = _checks.float_array(attributes, "attributes")
+    if attributes.ndim == 1:
+        attributes = attributes[:, None]
+    if attributes.ndim != 2 or len(attributes) != len(clip):
+        raise ValueError(
+            f"attributes must have shape (N, K) with N = {len(clip)} (one row per vertex), "
+            f"got {attributes.shape}"
+        )
+    if attributes.size and np.abs(attributes).max() > MAX_COORDINATE:
+        raise ValueError(f"attributes must hold values of magnitude at most {MAX_COORDINATE:g}")
+    triangles = _checks.index_array(triangles, "triangles", len(clip), (None, 3))
+    return clip, attributes, triangles
+
+
+def _clip_triangles(
+    clip: np.ndarray, attributes: np.ndarray, triangles: np.ndarray
+) -> ClippedTriangles:
+    """:func:`clip_triangles` without the checks."""
     positions = _normalized(clip[triangles])
     a = attributes[triangles]
     soup = ClippedTriangles(positions, a, a * positions[:, :, 3:], np.arange(len(triangles)))
     for plane in PLANES:  # noperspective holds a w meanwhile: linear in clip space
         soup = _clip_against(soup, plane)
     soup = soup.take(np.all(soup.clip[:, :, 3] > 0, axis=1))  # drops degenerate pieces at the eye
+    # Every vertex is now inside, up to rounding: make that exact, so that no rounding (nor a
+    # piece far below the precision of its triangle, 1e-300 times smaller) can put a vertex
+    # outside, where dividing by its w could overflow.
+    w = soup.clip[:, :, 3:]
+    position = np.concatenate([np.clip(soup.clip[:, :, :3], -w, w), w], axis=2)
+    a_w = soup.noperspective
     return ClippedTriangles(
-        _normalized(soup.clip),
+        _normalized(position),
         soup.smooth,
-        soup.noperspective / soup.clip[:, :, 3:],
+        a_w / np.maximum(w, np.abs(a_w) / _HUGE),  # a w / w = a, and never beyond _HUGE
         soup.source,
     )
 
@@ -161,6 +216,9 @@ def _clip_against(soup: ClippedTriangles, plane: np.ndarray) -> ClippedTriangles
 
 _FIELDS = ("clip", "smooth", "noperspective", "source")
 _EPSILON = np.finfo(np.float64).eps
+#: A bound no noperspective attribute reaches unless its vertex's w is lost below float64's
+#: precision (a piece 1e300 times smaller than its triangle): there it stops, finite.
+_HUGE = 1e200
 
 
 @dataclass(frozen=True)

@@ -24,7 +24,9 @@ def lerp_with_window_z(
     >>> round(lerp_with_window_z(0.0, 1.0, 2.0, 6.0, 0.5, near=1.0, far=10.0), 3)  # right: 0.25
     0.375
     """
-    z1, z2 = depth.window_depth(w1, near, far), depth.window_depth(w2, near, far)
+    # On the near plane window z is exactly 0 and the mistaken division has no value; stop z at
+    # the smallest depth lerp_perspective takes, which draws its limit there.
+    z1, z2 = (np.maximum(depth.window_depth(w, near, far), 1e-12) for w in (w1, w2))
     return lerp.lerp_perspective(a1, a2, z1, z2, s)
 
 

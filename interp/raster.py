@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from interp import _checks, barycentric
-from interp.clipping import ClippedTriangles, clip_triangles
+from interp.clipping import ClippedTriangles, _check_scene, _clip_triangles
 
 #: Window coordinates are snapped to 1/SUBPIXELS of a pixel (8 bits, like llvmpipe).
 SUBPIXELS = 256
@@ -37,8 +37,6 @@ MODES = ("perspective", "affine", "subdivided")
 DEPTH_BITS = 40
 #: Most fragments handled at once; bounds memory when triangles overlap a lot.
 CHUNK = 1 << 22
-#: Clip coordinates larger than this are surely a mistake (and would overflow).
-MAX_COORDINATE = 1e12
 
 
 def rasterize(
@@ -175,7 +173,7 @@ def fragments(
     width = _checks.positive_int(width, "width")
     height = _checks.positive_int(height, "height")
     depth_bits = _checks.integer_in(depth_bits, "depth_bits", 16, DEPTH_BITS)
-    return _fragments(clip_triangles(clip, attributes, triangles), width, height, depth_bits)
+    return _fragments(_clip_triangles(clip, attributes, triangles), width, height, depth_bits)
 
 
 def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> np.ndarray:
@@ -204,18 +202,20 @@ def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> 
     >>> interpolate(f)[3, :, 0]               # the bottom row: x = 1/8, 3/8, 5/8, not drawn
     array([0.125, 0.375, 0.625, 0.   ])
     """
+    _check_fragments(frags)
     return frags.image(fragment_values(frags, mode, span).T, 0.0)
 
 
-def viewport(clip: np.ndarray, width: int, height: int) -> np.ndarray:
+def viewport(clip: object, width: int, height: int) -> np.ndarray:
     """Window coordinates ``(x_w, y_w, z_w)`` of clip-space points with ``w > 0``.
 
     Parameters
     ----------
-    clip : (..., 4) array
-        Clip-space positions.
+    clip : (..., 4) array_like
+        Clip-space positions, coordinates in [-1e12, 1e12], in front of the eye (``w > 0``)
+        and with ``|x|, |y|, |z| <= 1e12 w`` (NDC within 1e12: the divide must not overflow).
     width, height : int
-        The viewport's size in pixels.
+        The viewport's size in pixels, each in [1, 4096].
 
     Returns
     -------
@@ -229,6 +229,22 @@ def viewport(clip: np.ndarray, width: int, height: int) -> np.ndarray:
     array([[50. , 25. ,  0.5],
            [ 0. , 50. ,  1. ]])
     """
+    clip = _checks.float_array(clip, "clip")
+    if clip.ndim == 0 or clip.shape[-1] != 4:
+        raise ValueError(f"clip must have shape (..., 4): (x, y, z, w) per point, got {clip.shape}")
+    _checks.in_range(clip, "clip", -_checks.MAX_MAGNITUDE, _checks.MAX_MAGNITUDE)
+    w = clip[..., 3:]
+    if np.any(w <= 0):
+        raise ValueError("clip must have w > 0 everywhere, points in front of the eye: clip first")
+    if np.any(np.abs(clip[..., :3]) > _checks.MAX_MAGNITUDE * w):
+        raise ValueError("clip must have |x|, |y|, |z| <= 1e12 w: beyond, the divide overflows")
+    width = _checks.positive_int(width, "width")
+    height = _checks.positive_int(height, "height")
+    return _viewport(clip, width, height)
+
+
+def _viewport(clip: np.ndarray, width: int, height: int) -> np.ndarray:
+    """``((x/w + 1) width/2, (y/w + 1) height/2, (z/w + 1)/2)``, for (..., 4) clip positions."""
     ndc = clip[..., :3] / clip[..., 3:4]  # the perspective divide
     return (ndc + 1) / 2 * np.array([width, height, 1.0])
 
@@ -279,6 +295,33 @@ class Fragments:
     row_item: np.ndarray = field(repr=False)
     row_spans: np.ndarray = field(repr=False)
     row_depths: np.ndarray = field(repr=False)
+
+    def __post_init__(self) -> None:  # kinds and shapes only: fragments() makes these
+        _checks.positive_int(self.width, "width")
+        _checks.positive_int(self.height, "height")
+        if not isinstance(self.clipped, ClippedTriangles):
+            raise TypeError("clipped must be the ClippedTriangles the fragments came from")
+
+        def length(array: object) -> tuple[int]:
+            return array.shape[:1] if isinstance(array, np.ndarray) and array.ndim else (-1,)
+
+        P, T, R = length(self.pixel), len(self.clipped), length(self.row_spans)
+        expected = {
+            "pixel": ("iu", (*P,)),
+            "piece": ("iu", (*P,)),
+            "row_item": ("iu", (*P,)),
+            "barycentric": ("f", (3, *P)),
+            "barycentric_dx": ("f", (3, T)),
+            "barycentric_dy": ("f", (3, T)),
+            "row_spans": ("iu", (*R, 2)),
+            "row_depths": ("f", (*R, 2)),
+        }
+        for name, (kinds, shape) in expected.items():
+            array = getattr(self, name)
+            if not (
+                isinstance(array, np.ndarray) and array.dtype.kind in kinds and array.shape == shape
+            ):
+                raise TypeError(f"{name} must be an array of shape {shape}, as fragments() makes")
 
     @property
     def depth(self) -> np.ndarray:
@@ -332,6 +375,7 @@ def fragment_values(frags: Fragments, mode: str = "perspective", span: int = 16)
     >>> fragment_values(f)
     array([[0.5, 1.5]])
     """
+    _check_fragments(frags)
     mode = _checks.choice(mode, "mode", MODES)
     span = _checks.positive_int(span, "span")
     piece, b = frags.piece, frags.barycentric
@@ -378,6 +422,7 @@ def fragment_footprints(
     >>> fragment_footprints(f, "affine")     # 4 units over 4 pixels along x
     array([[1., 1.]])
     """
+    _check_fragments(frags)
     mode = _checks.choice(mode, "mode", MODES)
     pieces, piece = frags.clipped, frags.piece
     db = np.stack([frags.barycentric_dx, frags.barycentric_dy], axis=1)  # (3, 2, T)
@@ -401,32 +446,21 @@ def fragment_footprints(
     return footprint
 
 
+def _check_fragments(frags: object) -> None:
+    if not isinstance(frags, Fragments):
+        raise TypeError(
+            f"frags must be the Fragments that interp.fragments returns, got {type(frags).__name__}"
+        )
+
+
 # Scan conversion: triangles to fragments, one span of pixels per (triangle, row)
 # -------------------------------------------------------------------------------
-
-
-def _check_scene(
-    clip: object, attributes: object, triangles: object
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    clip = _checks.float_array(clip, "clip", (None, 4))
-    if clip.size and np.abs(clip).max() > MAX_COORDINATE:
-        raise ValueError(f"clip must hold coordinates of magnitude at most {MAX_COORDINATE:g}")
-    attributes = _checks.float_array(attributes, "attributes")
-    if attributes.ndim == 1:
-        attributes = attributes[:, None]
-    if attributes.ndim != 2 or len(attributes) != len(clip):
-        raise ValueError(
-            f"attributes must have shape (N, K) with N = {len(clip)} (one row per vertex), "
-            f"got {attributes.shape}"
-        )
-    triangles = _checks.index_array(triangles, "triangles", len(clip), (None, 3))
-    return clip, attributes, triangles
 
 
 def _fragments(
     pieces: ClippedTriangles, width: int, height: int, depth_bits: int = DEPTH_BITS
 ) -> Fragments:
-    window = viewport(pieces.clip, width, height)
+    window = _viewport(pieces.clip, width, height)
     X = np.rint(window[..., 0] * SUBPIXELS).astype(np.int64)  # snap to the subpixel grid
     Y = np.rint(window[..., 1] * SUBPIXELS).astype(np.int64)
     area2 = _twice_area(X, Y)
@@ -617,7 +651,7 @@ def _depth_test(
     Returns the drawn pixels (flat image indices, row 0 at the top, ascending) and the row item
     that won each.
     """
-    item_bits = max(len(rows.piece).bit_length(), 1)  # at most 23: see MAX_ROWS
+    item_bits = max(len(rows.piece).bit_length(), 1)
     depth_bits = min(depth_bits, 62 - item_bits)  # so 40 bits may become 39
     cleared = _fixed_point(np.array(1.0), depth_bits) << item_bits  # depth 1: nothing passes
     keys = np.full(width * height, cleared, dtype=np.int64)
@@ -653,11 +687,11 @@ def _fixed_point(z: np.ndarray, bits: int) -> np.ndarray:
 
 
 def _float32_window_depth(clip: np.ndarray) -> np.ndarray:
-    """Window depth of each vertex (T, 3) as a GL pipeline computes it in float32:
-    ``(z * (1 / w)) * 0.5 + 0.5``. Used with a GL-sized depth buffer, whose ties it decides."""
-    z, w = clip[..., 2].astype(np.float32), clip[..., 3].astype(np.float32)
+    """Window depth of each vertex (T, 3) as a GL pipeline computes it: NDC z as a float32,
+    then ``z * 0.5 + 0.5`` in float32. For a GL-sized depth buffer, whose ties it decides."""
     half = np.float32(0.5)
-    return ((z * (np.float32(1) / w)) * half + half).astype(np.float64)
+    ndc = (clip[..., 2] / clip[..., 3]).astype(np.float32)
+    return (ndc * half + half).astype(np.float64)
 
 
 # Interpolation: what each vertex hands on
