@@ -26,6 +26,11 @@ from interp.lerp import _lerp
 
 #: Clip coordinates and attributes larger than this in magnitude are surely a mistake.
 MAX_COORDINATE = _checks.MAX_MAGNITUDE
+#: Most triangles one call takes (the largest ground plane has 131072). Clipping needs up to
+#: about 1.6 kB + 0.7 kB per attribute column for each: 1.6 GB at 16 columns.
+MAX_TRIANGLES = 1 << 17
+#: Most attribute columns (RGBA and texture coordinates need 6).
+MAX_ATTRIBUTES = 16
 
 #: The six planes of the view volume as rows ``n``: a clip-space point P is inside when
 #: ``n @ P >= 0``. Near and far first.
@@ -66,23 +71,27 @@ class ClippedTriangles:
     noperspective: np.ndarray
     source: np.ndarray
 
-    def __post_init__(self) -> None:  # shapes only: made by clip_triangles, often
-        source = self.source
+    def __post_init__(self) -> None:  # kinds and shapes only, and quickly: made often
+        source, clip, smooth, noperspective = (
+            self.source,
+            self.clip,
+            self.smooth,
+            self.noperspective,
+        )
         if not (isinstance(source, np.ndarray) and source.dtype.kind in "iu" and source.ndim == 1):
             raise TypeError("source must be a (T,) int array: which input triangle each came from")
-        T = len(source)
-        expected = {"clip": (T, 3, 4), "smooth": (T, 3, None), "noperspective": (T, 3, None)}
-        for name, shape in expected.items():
-            array = getattr(self, name)
-            if (
-                not isinstance(array, np.ndarray)
-                or array.dtype.kind != "f"
-                or array.ndim != 3
-                or any(n is not None and n != m for n, m in zip(shape, array.shape, strict=True))
+        if not (isinstance(clip, np.ndarray) and clip.dtype.kind == "f"):
+            raise TypeError("clip must be a (T, 3, 4) float array")
+        if clip.shape != (len(source), 3, 4):
+            raise TypeError(f"clip must be a (T, 3, 4) float array, T = {len(source)}")
+        for name, array in (("smooth", smooth), ("noperspective", noperspective)):
+            if not (
+                isinstance(array, np.ndarray)
+                and array.dtype.kind == "f"
+                and array.shape[:2] == (len(source), 3)
+                and array.shape == smooth.shape
             ):
-                raise TypeError(f"{name} must be a float array of shape (T, 3, ...) = {shape}")
-        if self.smooth.shape != self.noperspective.shape:
-            raise TypeError("smooth and noperspective must have the same shape")
+                raise TypeError(f"{name} must be a (T, 3, K) float array, T = {len(source)}")
 
     def __len__(self) -> int:
         return len(self.source)
@@ -103,9 +112,9 @@ def clip_triangles(clip: object, attributes: object, triangles: object) -> Clipp
         Clip-space vertex positions, coordinates in [-1e12, 1e12] (any finite value there,
         however small).
     attributes : (N, K) array_like
-        Vertex attributes, values in [-1e12, 1e12].
+        Vertex attributes, values in [-1e12, 1e12], at most 16 columns.
     triangles : (M, 3) array_like of int
-        Vertex indices.
+        Vertex indices, at most 131072 triangles.
 
     Returns
     -------
@@ -140,9 +149,17 @@ def _check_scene(
             f"attributes must have shape (N, K) with N = {len(clip)} (one row per vertex), "
             f"got {attributes.shape}"
         )
+    if attributes.shape[1] > MAX_ATTRIBUTES:
+        raise ValueError(
+            f"attributes must have at most {MAX_ATTRIBUTES} columns, got {attributes.shape[1]}"
+        )
     if attributes.size and np.abs(attributes).max() > MAX_COORDINATE:
         raise ValueError(f"attributes must hold values of magnitude at most {MAX_COORDINATE:g}")
     triangles = _checks.index_array(triangles, "triangles", len(clip), (None, 3))
+    if len(triangles) > MAX_TRIANGLES:
+        raise ValueError(
+            f"triangles must hold at most {MAX_TRIANGLES:,} triangles, got {len(triangles):,}"
+        )
     return clip, attributes, triangles
 
 
@@ -152,22 +169,37 @@ def _clip_triangles(
     """:func:`clip_triangles` without the checks."""
     positions = _normalized(clip[triangles])
     a = attributes[triangles]
-    soup = ClippedTriangles(positions, a, a * positions[:, :, 3:], np.arange(len(triangles)))
-    for plane in PLANES:  # noperspective holds a w meanwhile: linear in clip space
+    soup = _Soup(np.concatenate([positions, a * positions[:, :, 3:], a], axis=2), np.arange(len(a)))
+    for plane in PLANES:
         soup = _clip_against(soup, plane)
-    soup = soup.take(np.all(soup.clip[:, :, 3] > 0, axis=1))  # drops degenerate pieces at the eye
+    in_front = np.all(soup.vertices[:, :, 3] > 0, axis=1)  # drops degenerate pieces at the eye
+    vertices, source = soup.vertices[in_front], soup.source[in_front]
     # Every vertex is now inside, up to rounding: make that exact, so that no rounding (nor a
     # piece far below the precision of its triangle, 1e-300 times smaller) can put a vertex
     # outside, where dividing by its w could overflow.
-    w = soup.clip[:, :, 3:]
-    position = np.concatenate([np.clip(soup.clip[:, :, :3], -w, w), w], axis=2)
-    a_w = soup.noperspective
+    k = attributes.shape[1]
+    w = vertices[:, :, 3:4]
+    position = np.concatenate([np.clip(vertices[:, :, :3], -w, w), w], axis=2)
+    a_w = vertices[:, :, 4 : 4 + k]
     return ClippedTriangles(
         _normalized(position),
-        soup.smooth,
+        vertices[:, :, 4 + k :],
         a_w / np.maximum(w, np.abs(a_w) / _HUGE),  # a w / w = a, and never beyond _HUGE
-        soup.source,
+        source,
     )
+
+
+@dataclass(frozen=True)
+class _Soup:
+    """Triangles while they are clipped. Per vertex, everything clipping interpolates is in one
+    (T, 3, 4 + 2K) array: the clip position, then ``a w`` for each noperspective attribute
+    (linear in clip space), then each smooth attribute ``a``."""
+
+    vertices: np.ndarray
+    source: np.ndarray  # (T,) the input triangle each came from
+
+    def take(self, index: np.ndarray) -> _Soup:
+        return _Soup(self.vertices[index], self.source[index])
 
 
 def _normalized(clip: np.ndarray) -> np.ndarray:
@@ -182,9 +214,9 @@ def _normalized(clip: np.ndarray) -> np.ndarray:
     return np.ldexp(clip, -exponent[:, None, None])
 
 
-def _clip_against(soup: ClippedTriangles, plane: np.ndarray) -> ClippedTriangles:
+def _clip_against(soup: _Soup, plane: np.ndarray) -> _Soup:
     """One Sutherland-Hodgman pass against one plane, for all triangles at once."""
-    distance = soup.clip @ plane  # (T, 3), >= 0 inside
+    distance = soup.vertices[:, :, :4] @ plane  # (T, 3), >= 0 inside
     inside = distance >= 0
     n_inside = inside.sum(axis=1)
     if np.all(n_inside == 3):
@@ -209,12 +241,12 @@ def _clip_against(soup: ClippedTriangles, plane: np.ndarray) -> ClippedTriangles
     ]
     parent = np.concatenate([np.flatnonzero(n_inside == 3)] + [index for _, index in pieces[1:]])
     order = np.argsort(parent, kind="stable")  # back into draw order
-    return ClippedTriangles(
-        *(np.concatenate([getattr(p, f) for p, _ in pieces])[order] for f in _FIELDS)
+    return _Soup(
+        np.concatenate([p.vertices for p, _ in pieces])[order],
+        np.concatenate([p.source for p, _ in pieces])[order],
     )
 
 
-_FIELDS = ("clip", "smooth", "noperspective", "source")
 _EPSILON = np.finfo(np.float64).eps
 #: A bound no noperspective attribute reaches unless its vertex's w is lost below float64's
 #: precision (a piece 1e300 times smaller than its triangle): there it stops, finite.
@@ -223,30 +255,20 @@ _HUGE = 1e200
 
 @dataclass(frozen=True)
 class _Vertex:
-    """One vertex of each of T triangles: clip position, attributes, plane distance."""
+    """One vertex of each of T triangles: what clipping interpolates, and the plane distance."""
 
-    clip: np.ndarray  # (T, 4)
-    smooth: np.ndarray  # (T, K)
-    noperspective: np.ndarray  # (T, K)
+    data: np.ndarray  # (T, 4 + 2K): clip position, a w, a
     source: np.ndarray  # (T,)
     distance: np.ndarray  # (T,)
 
 
-def _rolled(soup: ClippedTriangles, first: np.ndarray, distance: np.ndarray) -> list[_Vertex]:
+def _rolled(soup: _Soup, first: np.ndarray, distance: np.ndarray) -> list[_Vertex]:
     """The three vertices of each triangle, cyclically rolled so vertex ``first`` comes first."""
-    rows = np.arange(len(soup))
+    rows = np.arange(len(soup.source))
     vertices = []
     for k in range(3):
         i = (first + k) % 3
-        vertices.append(
-            _Vertex(
-                soup.clip[rows, i],
-                soup.smooth[rows, i],
-                soup.noperspective[rows, i],
-                soup.source,
-                distance[rows, i],
-            )
-        )
+        vertices.append(_Vertex(soup.vertices[rows, i], soup.source, distance[rows, i]))
     return vertices
 
 
@@ -265,40 +287,18 @@ def _cut(inner: _Vertex, outer: _Vertex) -> _Vertex:
     """
     span = inner.distance - outer.distance  # > 0, and no cancellation: d_in >= 0 > d_out
     from_inner = inner.distance <= -outer.distance  # t <= 1/2
-    near, far = _either(from_inner, inner, outer), _either(from_inner, outer, inner)
-    f = np.where(from_inner, inner.distance, -outer.distance) / span  # in [0, 1/2]
-    point = _lerp(near.clip, far.clip, f[:, None])
+    f = np.where(from_inner, inner.distance, -outer.distance) / span  # t or 1 - t: in [0, 1/2]
+    column = from_inner[:, None]
+    near = np.where(column, inner.data, outer.data)
+    far = np.where(column, outer.data, inner.data)
+    point = _lerp(near, far, f[:, None])
     # Where the point's w is lost in rounding (the edge crosses the eye's plane w = 0 right
     # there), make it exactly 0: such a point has no place on the screen, and a later plane cuts
     # it away, or drops the piece as degenerate.
-    w_near, w_far = near.clip[:, 3], far.clip[:, 3]
-    rounding = 4 * _EPSILON * (np.abs(w_near) + f * np.abs(w_far))
+    rounding = 4 * _EPSILON * (np.abs(near[:, 3]) + f * np.abs(far[:, 3]))
     point[:, 3] = np.where(np.abs(point[:, 3]) > rounding, point[:, 3], 0.0)
-    return _Vertex(
-        point,
-        _lerp(near.smooth, far.smooth, f[:, None]),
-        _lerp(near.noperspective, far.noperspective, f[:, None]),  # a w, linear in clip space
-        inner.source,
-        np.zeros_like(f),
-    )
+    return _Vertex(point, inner.source, np.zeros_like(f))
 
 
-def _either(first: np.ndarray, a: _Vertex, b: _Vertex) -> _Vertex:
-    """Vertex a where ``first``, else b (the distance is not needed)."""
-    column = first[:, None]
-    return _Vertex(
-        np.where(column, a.clip, b.clip),
-        np.where(column, a.smooth, b.smooth),
-        np.where(column, a.noperspective, b.noperspective),
-        a.source,
-        a.distance,
-    )
-
-
-def _assemble(a: _Vertex, b: _Vertex, c: _Vertex) -> ClippedTriangles:
-    return ClippedTriangles(
-        np.stack([a.clip, b.clip, c.clip], axis=1),
-        np.stack([a.smooth, b.smooth, c.smooth], axis=1),
-        np.stack([a.noperspective, b.noperspective, c.noperspective], axis=1),
-        a.source,
-    )
+def _assemble(a: _Vertex, b: _Vertex, c: _Vertex) -> _Soup:
+    return _Soup(np.stack([a.data, b.data, c.data], axis=1), a.source)

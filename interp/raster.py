@@ -22,6 +22,7 @@ Images are arrays: row 0 is the *top* of the image (window y = height - 1/2).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -35,8 +36,14 @@ SUBPIXELS = 256
 MODES = ("perspective", "affine", "subdivided")
 #: Bits of the fixed-point depth the depth test compares by default (GL's buffers have 24).
 DEPTH_BITS = 40
-#: Most fragments handled at once; bounds memory when triangles overlap a lot.
+#: Most fragments depth-tested, or values interpolated, at once: bounds memory however much the
+#: triangles overlap and however large the image.
 CHUNK = 1 << 22
+#: Most (triangle, pixel row) pairs one image may hold: about 300 bytes each while drawing.
+MAX_ROWS = 1 << 22
+#: Most attribute values one image may hold (width x height x columns): 8 bytes each in the
+#: result (interpolated in chunks of CHUNK values), beside about 100 bytes per pixel drawing it.
+MAX_VALUES = 1 << 25
 
 
 def rasterize(
@@ -97,8 +104,15 @@ def rasterize(
     ends are solved from the edge functions by integer ceiling division. It depth-tests all
     triangles at once: each fragment's depth, in fixed point, and its draw order are packed
     into one integer key, and ``np.minimum.at`` keeps the smallest key per pixel, which is the
-    nearest fragment, the first drawn among equals (``GL_LESS``). And it works in chunks of
-    fragments, so that memory stays bounded however much the triangles overlap.
+    nearest fragment, the first drawn among equals (``GL_LESS``). And it depth-tests and
+    interpolates in chunks of fragments, so that memory stays bounded however much the
+    triangles overlap and however large the image.
+
+    Limits: images up to 4096 x 4096, at most 16 attribute columns and width x height x
+    columns at most 2**25; at most 131072 triangles, covering at most 2**22 (triangle, pixel
+    row) pairs after clipping; coordinates and attributes within 1e12 in magnitude. Beyond, a
+    ValueError names the argument. Peak memory is about 100 bytes per pixel (1.6 GB at 4096 x
+    4096) plus 300 per (triangle, row) pair.
 
     Examples
     --------
@@ -173,6 +187,12 @@ def fragments(
     width = _checks.positive_int(width, "width")
     height = _checks.positive_int(height, "height")
     depth_bits = _checks.integer_in(depth_bits, "depth_bits", 16, DEPTH_BITS)
+    pixels_times_columns = width * height * attributes.shape[1]
+    if pixels_times_columns > MAX_VALUES:
+        raise ValueError(
+            f"attributes has {attributes.shape[1]} columns: at {width} x {height} pixels at most "
+            f"{MAX_VALUES // (width * height)} fit (width x height x columns <= {MAX_VALUES:,})"
+        )
     return _fragments(_clip_triangles(clip, attributes, triangles), width, height, depth_bits)
 
 
@@ -203,7 +223,12 @@ def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> 
     array([0.125, 0.375, 0.625, 0.   ])
     """
     _check_fragments(frags)
-    return frags.image(fragment_values(frags, mode, span).T, 0.0)
+    mode = _checks.choice(mode, "mode", MODES)
+    span = _checks.positive_int(span, "span")
+    image = np.zeros((frags.height * frags.width, frags.clipped.smooth.shape[2]))
+    for chunk, values in _values_in_chunks(frags, mode, span):
+        image[frags.pixel[chunk]] = values.T
+    return image.reshape(frags.height, frags.width, -1)
 
 
 def viewport(clip: object, width: int, height: int) -> np.ndarray:
@@ -378,21 +403,10 @@ def fragment_values(frags: Fragments, mode: str = "perspective", span: int = 16)
     _check_fragments(frags)
     mode = _checks.choice(mode, "mode", MODES)
     span = _checks.positive_int(span, "span")
-    piece, b = frags.piece, frags.barycentric
-    if mode == "affine":
-        return barycentric.noperspective(b, _per_fragment(frags.clipped.noperspective, piece))
-    a_over_w, one_over_w = _a_over_w_and_one_over_w(frags)
-    if mode == "perspective":
-        return barycentric.smooth(b, a_over_w, one_over_w)
-    x = frags.column
-    first, last = frags.span.T
-    left = first + (x - first) // span * span
-    right = np.minimum(left + span, last)
-    db = np.take(frags.barycentric_dx, piece, axis=1)
-    fraction = np.where(right > left, (x - left) / np.maximum(right - left, 1), 0.0)
-    return barycentric.subdivided(
-        b + (left - x) * db, b + (right - x) * db, fraction, a_over_w, one_over_w
-    )
+    values = np.empty((frags.clipped.smooth.shape[2], len(frags.pixel)))
+    for chunk, block in _values_in_chunks(frags, mode, span):
+        values[:, chunk] = block
+    return values
 
 
 def fragment_footprints(
@@ -564,6 +578,12 @@ def _rows(Y: np.ndarray, e: _Edges, width: int, height: int) -> _Rows:
     y_low = np.maximum(_ceil_div(Y.min(axis=1) - half, SUBPIXELS), 0)
     y_high = np.minimum((Y.max(axis=1) - half) // SUBPIXELS, height - 1)
     count = np.maximum(y_high - y_low + 1, 0)
+    if count.sum() > MAX_ROWS:
+        raise ValueError(
+            f"triangles cover {count.sum():,} (triangle, pixel row) pairs after clipping; one "
+            f"image holds at most {MAX_ROWS:,} (about 1.2 GB while drawing): draw fewer or "
+            "smaller triangles, or a smaller image"
+        )
     piece = np.repeat(np.arange(len(count)), count)
     y = y_low[piece] + _ranks(count)
 
@@ -651,7 +671,7 @@ def _depth_test(
     Returns the drawn pixels (flat image indices, row 0 at the top, ascending) and the row item
     that won each.
     """
-    item_bits = max(len(rows.piece).bit_length(), 1)
+    item_bits = max(len(rows.piece).bit_length(), 1)  # at most 23: see MAX_ROWS
     depth_bits = min(depth_bits, 62 - item_bits)  # so 40 bits may become 39
     cleared = _fixed_point(np.array(1.0), depth_bits) << item_bits  # depth 1: nothing passes
     keys = np.full(width * height, cleared, dtype=np.int64)
@@ -716,10 +736,43 @@ def _one_over_w(pieces: ClippedTriangles) -> np.ndarray:
     return np.maximum(w.min(axis=1, keepdims=True) / w, 2.0**-1000)
 
 
-def _a_over_w_and_one_over_w(frags: Fragments) -> tuple[np.ndarray, np.ndarray]:
-    """What each vertex hands on for perspective-correct interpolation: a/w and 1/w (scaled)."""
-    pieces = frags.clipped
+def _a_over_w_and_one_over_w(pieces: ClippedTriangles) -> np.ndarray:
+    """What each vertex hands on for perspective-correct interpolation: a/w and 1/w (scaled),
+    as one (T, 3, K + 1) array, so that each fragment gathers both at once."""
     one_over_w = _one_over_w(pieces)
-    per_vertex = np.concatenate([pieces.smooth * one_over_w[..., None], one_over_w[..., None]], 2)
-    per_vertex = _per_fragment(per_vertex, frags.piece)  # (3, K + 1, P): one gather
-    return per_vertex[:, :-1], per_vertex[:, -1]
+    return np.concatenate([pieces.smooth * one_over_w[..., None], one_over_w[..., None]], 2)
+
+
+def _values_in_chunks(frags: Fragments, mode: str, span: int) -> Iterator[tuple[slice, np.ndarray]]:
+    """The interpolated attributes, (K, n) for n fragments at a time: ``(fragments, values)``.
+
+    In chunks of about CHUNK values, so that the per-fragment gathers and temporaries (several
+    times the result) stay bounded however large the image.
+    """
+    pieces = frags.clipped
+    per_vertex = pieces.noperspective if mode == "affine" else _a_over_w_and_one_over_w(pieces)
+    step = max(CHUNK // per_vertex.shape[2], 1) if per_vertex.shape[2] else len(frags.pixel) + 1
+    for start in range(0, len(frags.pixel), step):
+        chunk = slice(start, start + step)
+        piece, b = frags.piece[chunk], frags.barycentric[:, chunk]
+        gathered = _per_fragment(per_vertex, piece)  # (3, K or K + 1, n): one gather
+        if mode == "affine":
+            yield chunk, barycentric.noperspective(b, gathered)
+            continue
+        a_over_w, one_over_w = gathered[:, :-1], gathered[:, -1]
+        if mode == "perspective":
+            yield chunk, barycentric.smooth(b, a_over_w, one_over_w)
+            continue
+        # Subdivided: exact at anchors every span pixels from the span's first column.
+        x = frags.pixel[chunk] % frags.width
+        first, last = frags.row_spans[frags.row_item[chunk]].T
+        left = first + (x - first) // span * span
+        right = np.minimum(left + span, last)
+        db = np.take(frags.barycentric_dx, piece, axis=1)
+        fraction = np.where(right > left, (x - left) / np.maximum(right - left, 1), 0.0)
+        yield (
+            chunk,
+            barycentric.subdivided(
+                b + (left - x) * db, b + (right - x) * db, fraction, a_over_w, one_over_w
+            ),
+        )

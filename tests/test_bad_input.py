@@ -15,6 +15,13 @@ TRI = np.array([[-1, -1, 0, 1], [1, -1, 0, 1], [0, 1, 0, 1.0]])
 ATTR = np.zeros((3, 2))
 IDX = np.array([[0, 1, 2]])
 UV = np.zeros((4, 4))
+#: 2**17 triangles covering the whole view: 2**29 (triangle, row) pairs at 4096 rows.
+FULL_SCREEN_MANY = (
+    np.array([[-1, -1, 0, 1], [3, -1, 0, 1], [-1, 3, 0, 1.0]]),
+    np.zeros((3, 1)),
+    np.tile([0, 1, 2], (2**17, 1)),
+)
+
 CASES = [
     # (call, exception, words the message must contain)
     (lambda: interp.perspective(0, 1, 1, 2), ValueError, "fovy_degrees"),
@@ -145,6 +152,15 @@ CASES = [
     (lambda: interp.rasterize(TRI, ATTR + 1e300, IDX, 8, 8), ValueError, "attributes"),
     (lambda: interp.ground_plane(size=1e300), ValueError, "size"),
     (lambda: interp.look_at([0, 0, 1e300], [0, 0, 0], [0, 1, 0]), ValueError, "eye"),
+    # Memory bounded by what the work will cost.
+    (lambda: interp.rasterize(TRI, np.zeros((3, 17)), IDX, 8, 8), ValueError, "at most 16 col"),
+    (lambda: interp.rasterize(TRI, np.zeros((3, 3)), IDX, 4096, 4096), ValueError, "attributes"),
+    (
+        lambda: interp.fragments(TRI, ATTR, np.zeros((2**17 + 1, 3), int), 8, 8),
+        ValueError,
+        "triang",
+    ),
+    (lambda: interp.fragments(*FULL_SCREEN_MANY, 16, 4096), ValueError, "triangles cover"),
     (lambda: interp.rasterize(TRI, ATTR, IDX, 8, 8, depth_bits=8), ValueError, "depth_bits"),
     (lambda: interp.rasterize(TRI, ATTR, IDX, 8, 8, depth_bits=24.0), TypeError, "depth_bits"),
 ]
