@@ -36,13 +36,14 @@ SUBPIXELS = 256
 MODES = ("perspective", "affine", "subdivided")
 #: Bits of the fixed-point depth the depth test compares by default (GL's buffers have 24).
 DEPTH_BITS = 40
-#: Most fragments depth-tested, or values interpolated, at once: bounds memory however much the
-#: triangles overlap and however large the image.
+#: Most fragments depth-tested at once: bounds memory however much the triangles overlap.
 CHUNK = 1 << 22
+#: Most attribute values interpolated at once: bounds memory however large the image.
+VALUES_CHUNK = 1 << 20
 #: Most (triangle, pixel row) pairs one image may hold: about 300 bytes each while drawing.
 MAX_ROWS = 1 << 22
 #: Most attribute values one image may hold (width x height x columns): 8 bytes each in the
-#: result (interpolated in chunks of CHUNK values), beside about 100 bytes per pixel drawing it.
+#: result (interpolated VALUES_CHUNK at a time), beside about 100 bytes per pixel drawing it.
 MAX_VALUES = 1 << 25
 
 
@@ -746,12 +747,12 @@ def _a_over_w_and_one_over_w(pieces: ClippedTriangles) -> np.ndarray:
 def _values_in_chunks(frags: Fragments, mode: str, span: int) -> Iterator[tuple[slice, np.ndarray]]:
     """The interpolated attributes, (K, n) for n fragments at a time: ``(fragments, values)``.
 
-    In chunks of about CHUNK values, so that the per-fragment gathers and temporaries (several
-    times the result) stay bounded however large the image.
+    In chunks of about VALUES_CHUNK values, so that the per-fragment gathers and temporaries
+    (several times the result) stay bounded however large the image.
     """
     pieces = frags.clipped
     per_vertex = pieces.noperspective if mode == "affine" else _a_over_w_and_one_over_w(pieces)
-    step = max(CHUNK // per_vertex.shape[2], 1) if per_vertex.shape[2] else len(frags.pixel) + 1
+    step = max(VALUES_CHUNK // max(per_vertex.shape[2], 1), 1)
     for start in range(0, len(frags.pixel), step):
         chunk = slice(start, start + step)
         piece, b = frags.piece[chunk], frags.barycentric[:, chunk]
