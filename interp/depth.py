@@ -16,25 +16,17 @@ from __future__ import annotations
 import numpy as np
 
 from interp import _checks
-
-
-def _planes(near: object, far: object) -> tuple[float, float]:
-    near = _checks.real_in(near, "near", 0, None, low_open=True)
-    far = _checks.real(far, "far")
-    if far <= near:
-        raise ValueError(f"far must be greater than near ({near:g}), got {far:g}")
-    return near, far
+from interp.camera import _planes
 
 
 def _view_depth(w: object) -> np.ndarray:
-    w = _checks.float_array(w, "w")
-    if np.any(w <= 0):
-        raise ValueError("w must be > 0 (a point in front of the camera)")
-    return w
+    return _checks.depth_array(w, "w")
 
 
 def ndc_depth(w: object, near: float, far: float) -> np.ndarray | float:
     """NDC z at view depth ``w``: ``(far + near)/(far - near) - 2 far near / ((far - near) w)``.
+
+    View depths ``w`` lie in [1e-12, 1e12], and ``1e-12 <= near < far <= 1e12``.
 
     Examples
     --------
@@ -46,8 +38,13 @@ def ndc_depth(w: object, near: float, far: float) -> np.ndarray | float:
 
 
 def _ndc_depth(w: np.ndarray, near: float, far: float) -> np.ndarray:
-    """``z_clip / w`` for the matrix of :func:`interp.perspective`: ``A + B / w``."""
-    return (far + near) / (far - near) - 2 * far * near / ((far - near) * w)
+    """``z_clip / w`` for the matrix of :func:`interp.perspective`: ``A + B / w``.
+
+    ``A + B / w = (far + near)/(far - near) - 2 far near / ((far - near) w)``, written over one
+    denominator, ``(far (w - near) + near (w - far)) / ((far - near) w)``, so that the near and
+    far planes land on exactly -1 and +1.
+    """
+    return (far * (w - near) + near * (w - far)) / ((far - near) * w)
 
 
 def _window_depth(w: np.ndarray, near: float, far: float) -> np.ndarray:
@@ -56,7 +53,8 @@ def _window_depth(w: np.ndarray, near: float, far: float) -> np.ndarray:
 
 
 def window_depth(w: object, near: float, far: float) -> np.ndarray | float:
-    """What the depth buffer stores for view depth ``w``: ``(NDC z + 1) / 2``, in [0, 1].
+    """What the depth buffer stores for view depth ``w``: ``(NDC z + 1) / 2``, in [0, 1]
+    for ``near <= w <= far`` (exactly 0 and 1 on the planes).
 
     Examples
     --------
@@ -82,9 +80,9 @@ def depth_resolution(
     Parameters
     ----------
     w : array_like
-        View depths, > 0.
+        View depths, in [1e-12, 1e12].
     near, far : float
-        The clipping distances.
+        The clipping distances, ``1e-12 <= near < far <= 1e12``.
     buffer : {"float32", "fixed24"}
         The depth buffer's format.
 
