@@ -96,12 +96,7 @@ def ground_truth(camera: Camera, width: int, height: int, size: float = LESSON_S
         k = np.where(rise != 0, -start[..., 1] / rise, np.nan)  # where y = 0 along the ray
     hit = start + k[..., None] * (stop - start)
     half = size / 2
-    seen = (
-        (k >= 0)
-        & (k <= 1)
-        & (np.abs(hit[..., 0]) <= half)
-        & (np.abs(hit[..., 2]) <= half)
-    )
+    seen = (k >= 0) & (k <= 1) & (np.abs(hit[..., 0]) <= half) & (np.abs(hit[..., 2]) <= half)
     view = np.concatenate([hit, np.ones_like(k)[..., None]], axis=-1) @ camera.view.T
     w = np.where(seen, -view[..., 2], np.nan)
     u = np.where(seen, hit[..., 0] / size + 0.5, np.nan)
@@ -167,7 +162,7 @@ def plane_fit(values: np.ndarray, where: np.ndarray) -> PlaneFit:
     where = np.asarray(where, dtype=bool) & np.isfinite(values)
     rows, cols = np.nonzero(where)
     if len(rows) < 3:
-        return PlaneFit(np.zeros(3), 0.0, int(len(rows)))
+        return PlaneFit(np.zeros(3), 0.0, len(rows))
     z = values[where]
     design = np.column_stack([cols, rows, np.ones(len(rows))]).astype(float)
     scale = max(float(np.abs(z).max()), 1e-300)
@@ -176,7 +171,7 @@ def plane_fit(values: np.ndarray, where: np.ndarray) -> PlaneFit:
     spread = float(z.max() - z.min())
     residual = float(np.abs(design @ coefficients - z).max())
     misfit = residual / spread if spread > 0 else 0.0
-    return PlaneFit(coefficients, misfit, int(len(rows)))
+    return PlaneFit(coefficients, misfit, len(rows))
 
 
 def misfits(truth: GroundTruth, name: str) -> list[PlaneFit]:
