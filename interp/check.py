@@ -44,11 +44,23 @@ __all__ = [
     "clip_barycentrics",
     "gap_peak",
     "ndc_depth",
+    "near_clip",
     "perspective_lerp",
     "project",
+    "recap",
+    "recap_1",
+    "recap_2",
+    "recap_3",
+    "recap_4",
+    "recap_5",
+    "recap_6",
+    "recap_7",
+    "recap_8",
+    "recap_9",
     "s_from_t",
     "t_from_s",
     "where_m_lands",
+    "worked_example",
 ]
 
 #: What the student edition's exercise cells hold until the student writes the function.
@@ -1194,7 +1206,7 @@ QUIZZES: dict[int, list[Question]] = {
             "With a 24-bit fixed-point depth buffer, halving the near plane:",
             "a",
             a=(
-                "Doubles the smallest depth step everywhere.",
+                "About doubles the smallest depth step, at every depth.",
                 "steps grow like w^2 / near in fixed point.",
             ),
             b=("Halves every depth step.", "the opposite: a smaller near plane costs precision."),
@@ -1304,7 +1316,8 @@ QUIZZES: dict[int, list[Question]] = {
             "a",
             a=(
                 "Lowers the largest error a lot.",
-                "each small triangle spans a small range of depths (3.86 texels fall to 0.12).",
+                "each small triangle spans a small range of depths (at the lesson's default "
+                "camera the largest error falls from 3.86 to 0.12 texels).",
             ),
             b=("Removes the error completely.", "the error shrinks but stays above 0."),
             c=("Makes the error worse.", "more, smaller triangles are each nearly exact."),
@@ -1540,3 +1553,69 @@ def _recap_checker(lesson: int) -> Callable[[Callable[[], dict]], Verdict]:
 recap_1, recap_2, recap_3, recap_4, recap_5, recap_6, recap_7, recap_8, recap_9 = (
     _recap_checker(k) for k in range(1, 10)
 )
+
+
+# --- lesson 8: clipping ----------------------------------------------------------------------
+
+
+def _near_t(z1: float, w1: float, z2: float, w2: float) -> float:
+    """Where the edge from clip-space (z1, w1) to (z2, w2) meets the near plane z = -w."""
+    d1, d2 = z1 + w1, z2 + w2  # >= 0 inside the near plane
+    return d1 / (d1 - d2)
+
+
+def near_clip(student: Callable[[float, float, float, float], float]) -> Verdict:
+    """Lesson 8: ``student(z1, w1, z2, w2)`` is the parameter t at which the edge from a vertex
+    inside the near plane (clip z1, w1, with ``z1 >= -w1``) to one outside it (``z2 < -w2``)
+    crosses the near plane ``z = -w``, found in clip space as :mod:`interp.clipping` does.
+
+    Examples
+    --------
+    >>> near_clip(lambda z1, w1, z2, w2: (z1 + w1) / ((z1 + w1) - (z2 + w2)))
+    ✓ near_clip: right on all 24 cases, among them the inside vertex on the near plane and ...
+    >>> near_clip(lambda z1, w1, z2, w2: (-1 - z1 / w1) / (z2 / w2 - z1 / w1))
+    ✗ that interpolates NDC z = z/w, ...
+    """
+
+    def draw(r: np.random.Generator) -> tuple[float, ...]:
+        # an edge from a point in front of the near plane to one in front of the eye but
+        # before the near plane, both made with interp.perspective's near = n, far = f
+        n, f = r.uniform(0.1, 2), r.uniform(5, 100)
+        w1, w2 = r.uniform(n * 1.2, f), r.uniform(0.05 * n, 0.9 * n)
+
+        def z(w):
+            return (f + n) / (f - n) * w - 2 * f * n / (f - n)
+
+        return z(w1), w1, z(w2), w2
+
+    cases = [
+        Case((0.0, 2.0, -3.0, 1.0)),
+        Case((1.0, 3.0, -1.5, 0.5)),
+        Case((-1.0, 1.0, -4.0, 2.0), "the inside vertex on the near plane"),
+        Case((2.0, 4.0, -1.0, -1.0), "the outside vertex behind the eye"),
+        *_random(9, 20, draw),
+    ]
+    return _judge(
+        "near_clip",
+        student,
+        _near_t,
+        cases,
+        "z1, w1, z2, w2",
+        [
+            (
+                lambda z1, w1, z2, w2: (-1 - z1 / w1) / (z2 / w2 - z1 / w1),
+                "that interpolates NDC z = z/w, which is not linear along the edge in space "
+                "(and has no meaning behind the eye): clip first, in clip space, where the "
+                "distance z + w to the near plane is linear in t.",
+            ),
+            (
+                lambda z1, w1, z2, w2: 1 - _near_t(z1, w1, z2, w2),
+                "that is measured from the outside vertex: t is 0 at the inside vertex (z1, w1).",
+            ),
+            (
+                lambda z1, w1, z2, w2: (z1 - w1) / ((z1 - w1) - (z2 - w2)),
+                "that is where the edge meets the far plane z = w; the near plane is z = -w, "
+                "where z + w = 0.",
+            ),
+        ],
+    )

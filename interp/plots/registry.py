@@ -507,6 +507,8 @@ class Checkerboards(LessonFigure):
         error = np.where(views.covered, views.error, -1.0)
         row = int(np.unravel_index(np.argmax(error), error.shape)[0])
         how = "affine" if views.mode == "affine" else f"exact every {self.params['span']} px"
+        if error.max() < 0.005:
+            return f"Largest error {error.max():.1g} texels ({how}): nothing to see, rounding."
         return f"Largest error {error.max():.2f} texels ({how}), at image row {row}."
 
 
