@@ -170,7 +170,9 @@ def plane_fit(values: np.ndarray, where: np.ndarray) -> PlaneFit:
     coefficients = coefficients * scale
     spread = float(z.max() - z.min())
     residual = float(np.abs(design @ coefficients - z).max())
-    misfit = residual / spread if spread > 0 else 0.0
+    # A constant (to rounding) is a plane: its spread is rounding, and so is its residual.
+    constant = spread <= 1e-12 * float(np.abs(z).max())
+    misfit = 0.0 if constant else residual / spread
     return PlaneFit(coefficients, misfit, len(rows))
 
 

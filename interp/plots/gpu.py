@@ -63,6 +63,7 @@ class ShaderView(Plot):
         p = self.params
         width, height = int(p["width"]), int(p["height"])
         scene = ground_plane(p["camera"].fitted(width, height), LESSON_SIZE, quads=1)
+        self.behind = int(np.sum(scene.clip[:, 3] <= 0))
         return shaders.shade(
             scene.clip, SHADER_COLOURS, scene.triangles, width, height, qualifier, divided
         )

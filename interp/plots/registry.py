@@ -443,6 +443,8 @@ class ColourQuad(LessonFigure):
         if found is None:
             return "Nothing is drawn: the quad is out of view."
         largest, row = found
+        if largest < 0.005:
+            return "Affine and perspective-correct colours agree (they differ by less than 0.005)."
         return (
             f"Affine and perspective-correct colours differ by up to {largest:.2f} (on a scale "
             f"of 0 to 1 per channel), at image row {row}."
@@ -611,6 +613,12 @@ class Barycentrics(ColourQuad):
         if found is None:
             return f"Nothing is drawn: the triangle is out of view (corner depths w = {depths})."
         largest, row = found
+        if largest < 0.005:
+            return (
+                "The colour is the weights: clip-space (smooth) and screen-space "
+                "(noperspective) weights agree to within 0.005, because the corners' depths "
+                f"are w = {depths}."
+            )
         return (
             f"The colour is the weights: clip-space (smooth) and screen-space (noperspective) "
             f"weights differ by up to {largest:.2f}, at image row {row}; the corners' depths "
@@ -649,7 +657,8 @@ class Shader(LessonFigure):
 
     def readout(self) -> str:
         output = str(self.params["output"])
-        if not self.view.values[output][1].any():
+        covered = self.view.values[output][1]
+        if not covered.any():
             return "Nothing is drawn: the quad is out of view."
         from_smooth = self.view.difference_from("smooth")
         if output == "flat":
@@ -659,17 +668,18 @@ class Shader(LessonFigure):
             )
         if output == "noperspective":
             return f"Noperspective differs from smooth by up to {from_smooth:.2f} here."
-        from_affine = self.view.difference_from("noperspective")
-        if from_affine < 1e-9:
+        if self.view.behind == 0:
             return (
                 "Dividing by w in the vertex shader leaves every w = 1, so smooth has nothing to "
-                "correct with: the picture is noperspective's exactly, up to "
+                "correct with: the picture is noperspective's, up to "
                 f"{from_smooth:.2f} away from smooth."
             )
+        corners = "corner is" if self.view.behind == 1 else "corners are"
         return (
-            "Vertices behind the camera were divided before clipping could cut them off, and "
-            f"mirrored into view: the picture is up to {from_affine:.2f} away from "
-            "noperspective's, and nothing like smooth."
+            f"{self.view.behind} {corners} behind the camera (w < 0): divided before clipping "
+            "could cut them off, they are mirrored through the eye, and the picture covers "
+            f"{int(covered.sum())} pixels where smooth covers "
+            f"{int(self.view.values['smooth'][1].sum())}."
         )
 
 
