@@ -899,15 +899,22 @@ WORKED_ROWS = {
 
 
 def _worked_value(value: object, length: int) -> tuple[float, ...]:
-    """A row of the student's table as floats, or :class:`_NotAnAnswerError`."""
+    """A row of the student's table as floats, or :class:`_NotAnAnswerError` saying what it
+    must be."""
     if length == 1:
-        return (_scalar(value),)
+        try:
+            return (_scalar(value),)
+        except _NotAnAnswerError:
+            raise _NotAnAnswerError("one number") from None
     if isinstance(value, (str, bytes, dict)) or value is None or np.ndim(value) == 0:
         raise _NotAnAnswerError("three numbers, one per corner")
     flat = np.ravel(np.asarray(value, dtype=object))
     if flat.size != length:
         raise _NotAnAnswerError(f"{length} numbers, one per corner")
-    return tuple(_scalar(x) for x in flat)
+    try:
+        return tuple(_scalar(x) for x in flat)
+    except _NotAnAnswerError:
+        raise _NotAnAnswerError(f"{length} numbers, one per corner") from None
 
 
 def _worked_mistake(row: str, got: tuple[float, ...], table: dict[str, object]) -> str:
@@ -1506,7 +1513,7 @@ def recap(lesson: int, student: Callable[[], dict]) -> Verdict:
     for number, question in enumerate(questions, start=1):
         chosen = _letters(answers.get(number, answers.get(str(number))))
         if chosen is None or not chosen:
-            notes.append(f"- question {number}: no answer (give its letter as a string).")
+            notes.append(f'- question {number}: no answer: give its letter as a string, e.g. "b".')
             continue
         unknown = [c for c in chosen if c not in question.options]
         if unknown:
@@ -1590,7 +1597,7 @@ def near_clip(student: Callable[[float, float, float, float], float]) -> Verdict
 
     cases = [
         Case((0.0, 2.0, -3.0, 1.0)),
-        Case((1.0, 3.0, -1.5, 0.5)),
+        Case((1.0, 3.0, -1.5, 0.8)),
         Case((-1.0, 1.0, -4.0, 2.0), "the inside vertex on the near plane"),
         Case((2.0, 4.0, -1.0, -1.0), "the outside vertex behind the eye"),
         *_random(9, 20, draw),
