@@ -54,7 +54,7 @@ NOTATION: list[tuple[str, str, str, str, str, str]] = [
     ("Lengyel", "t", "(none)", "z", "1, 2", "his t is the screen parameter; plane at z = -e"),
     ("Ek (2019)", "q", "(none)", "z", "0, 1", "attribute c"),
     (
-        "blog (seed 002)",
+        "rasterization blog",
         "t_i (weights)",
         "(none)",
         "z_view",
