@@ -3,10 +3,12 @@
 Each lesson has exercises: write a small function, then call the checker here on it, e.g.
 ``interp.check.perspective_lerp(my_lerp)``; lesson 7's worked example is a table of numbers
 (:func:`worked_example`), and every lesson ends with recap questions (:func:`recap`, one
-``recap_N`` per lesson), each wrong answer told why. The checker calls the function with plain Python
-floats (no vectorizing needed) on a fixed list of cases: first one a student can redo by hand,
-then the endpoints and special cases (s = 0, s = 1, w1 = w2, ...), then random ones. It compares
-each answer with the library's own function, and when they differ it says
+``recap_N`` per lesson), each wrong answer told why.
+
+A checker calls the function with plain Python floats (no vectorizing needed) on a fixed list of
+cases: first one a student can redo by hand, then the endpoints and special cases (s = 0, s = 1,
+w1 = w2, ...), then random ones. It compares each answer with the library's own function, and
+when they differ it says
 
 - what the function returned, if that was not a number (None, a string, a generator...);
 - where it failed, if it raised an error (e.g. divided by zero at s = 0);
