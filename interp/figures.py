@@ -181,6 +181,7 @@ class Staging:
     def __init__(self, folder: Path) -> None:
         self.folder = folder
         self.staged: list[tuple[str, Path]] = []
+        self.names: set[str] = set()
         mask = os.umask(0)
         os.umask(mask)
         self.mode = 0o666 & ~mask  # what open() would give a new file
@@ -191,7 +192,9 @@ class Staging:
         if target.is_dir():
             raise UsageError(f"cannot write {target}: a folder of that name is in the way")
         with _signals_held():  # no interruption between making the file and noting it
-            handle, temporary = tempfile.mkstemp(dir=self.folder, prefix=f".{name}.", suffix=".tmp")
+            handle, temporary = tempfile.mkstemp(
+                dir=self.folder, prefix=self._prefix(name), suffix=".tmp"
+            )
             os.close(handle)
             self.staged.append((temporary, target))
         try:
@@ -216,8 +219,16 @@ class Staging:
     def __enter__(self) -> Staging:
         return self
 
+    def _prefix(self, name: str) -> str:
+        self.names.add(name)
+        return f".{name}.{os.getpid()}."
+
     def __exit__(self, *exc: object) -> None:
-        for temporary, _ in self.staged:
+        # Also any temporary made just before a signal stopped it being noted: this process's.
+        leftovers = {Path(t) for t, _ in self.staged}
+        for name in self.names:
+            leftovers |= set(self.folder.glob(f".{name}.{os.getpid()}.*.tmp"))
+        for temporary in leftovers:
             with contextlib.suppress(OSError):
                 os.unlink(temporary)
         self.staged.clear()
