@@ -144,8 +144,7 @@ def render(figure_class: type[LessonFigure], params: dict[str, object]) -> matpl
 
 
 def _settle_layout(figure: matplotlib.figure.Figure) -> None:
-    """Lay ``figure`` out once, then pin every subfigure and axes to a position rounded to 1e-6 of
-    the figure.
+    """Lay ``figure`` out once, then pin every axes to a position rounded to 1e-6 of the figure.
 
     Constrained layout's solver returns positions whose last bits vary from run to run; rounded,
     the files come out byte-identical.
@@ -153,11 +152,11 @@ def _settle_layout(figure: matplotlib.figure.Figure) -> None:
     figure.get_layout_engine().execute(figure)
     figure.set_layout_engine("none")
     subfigures = list(figure.subfigs)
-    while subfigures:  # a handout page's subfigures move with the solver too
+    while subfigures:  # subfigures (a handout page's title, figure and caption) first
         subfigure = subfigures.pop()
         box = subfigure.bbox_relative
-        box.set_points(np.round(box.get_points(), 6) + 0.0)  # + 0.0: no -0 in the file
-        subfigures.extend(subfigure.subfigs)
+        box.p0, box.p1 = np.round(box.p0, 6), np.round(box.p1, 6)
+        subfigures += subfigure.subfigs
     for ax in figure.axes:
         ax.set_position(np.round(ax.get_position(original=True).bounds, 6))
 
