@@ -27,17 +27,13 @@ from __future__ import annotations
 import numpy as np
 
 from interp import _checks
-from interp.raster import _check_scene, fragments, interpolate
+from interp.raster import MAX_COORDINATE, _check_scene, fragments, interpolate
 
 #: GLSL's interpolation qualifiers and the :func:`interp.rasterize` mode each one is.
 QUALIFIERS = {"smooth": "perspective", "noperspective": "affine", "flat": "flat"}
 
 #: OpenGL's default provoking vertex: the last vertex of each triangle.
 PROVOKING_VERTEX = 2
-
-#: The largest clip coordinate :func:`interp.rasterize` accepts (and so the largest NDC one
-#: after a divide by w): a vertex divided to beyond it is at infinity for the picture.
-MAX_COORDINATE = 1e12
 
 
 def divide_in_vertex_shader(clip: object) -> np.ndarray:
@@ -69,7 +65,7 @@ def divide_in_vertex_shader(clip: object) -> np.ndarray:
 
 def drawable(clip: np.ndarray, triangles: np.ndarray) -> np.ndarray:
     """Which triangles a divided scene can still be drawn from: those whose vertices all have
-    ``w != 0`` and land within :data:`MAX_COORDINATE` after the division (a vertex
+    ``w != 0`` and land within :data:`interp.raster.MAX_COORDINATE` after the division (a vertex
     very near the camera's plane lands near infinity).
 
     Examples
