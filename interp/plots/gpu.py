@@ -35,8 +35,8 @@ class ShaderView(Plot):
 
     Examples
     --------
-    >>> import matplotlib.pyplot as plt
-    >>> view = ShaderView(plt.subplots(1, 2)[1], width=32, height=24)
+    >>> from matplotlib.figure import Figure
+    >>> view = ShaderView(Figure().subplots(1, 2), width=32, height=24)
     >>> view.difference_from("noperspective") < 1e-12   # the mistake is noperspective
     True
     """

@@ -60,8 +60,8 @@ class PlanePanels(Plot):
 
     Examples
     --------
-    >>> import matplotlib.pyplot as plt
-    >>> panels = PlanePanels(plt.subplots(1, 2)[1], width=48, height=36)
+    >>> from matplotlib.figure import Figure
+    >>> panels = PlanePanels(Figure().subplots(1, 2), width=48, height=36)
     >>> [verdict(f) for f in panels.fits]
     ['is not a plane: off by up to 40% of its range', 'is a plane on each triangle']
     """
