@@ -227,7 +227,23 @@ def test_presentation_mode_makes_bigger_apps():
         apps.presentation(False)
     small = apps.st_mapping()
     assert big.figure.get_size_inches()[0] > small.figure.get_size_inches()[0]
-    assert big.controls["w1"].layout.width == "420px"
+    assert big.controls["w1"].layout.width == "380px"
+
+
+@pytest.mark.parametrize("name", sorted(apps.ALL))
+def test_every_figure_fits_a_laptop_and_a_projector(name):
+    # 848 px of output on a 1280 x 800 laptop with JupyterLab's file browser open; a 1280 x 720
+    # projector in presentation mode (the browser tests check the pages themselves).
+    from interp.apps._app import FIT, FIT_PRESENTATION
+
+    width, height = apps.ALL[name]().figure.get_size_inches()
+    assert width <= FIT[0] <= 8.48 and height <= FIT[1]
+    apps.presentation(True)
+    try:
+        width, height = apps.ALL[name]().figure.get_size_inches()
+    finally:
+        apps.presentation(False)
+    assert width <= FIT_PRESENTATION[0] and height <= FIT_PRESENTATION[1]
 
 
 def test_unknown_control_is_named():
@@ -239,20 +255,24 @@ def test_static_display_shows_the_figure_once_and_updates_it(monkeypatch):
     shown = []
 
     class Handle:
-        def update(self, obj):
-            shown.append(("update", obj))
+        def update(self, obj, metadata=None):
+            shown.append(("update", obj, metadata))
 
-    def fake_display(obj, display_id=False):
-        shown.append(("display", obj))
+    def fake_display(obj, display_id=False, metadata=None):
+        shown.append(("display", obj, metadata))
         return Handle() if display_id else None
 
     monkeypatch.setattr("interp.apps._app.display", fake_display)
     app = apps.st_mapping()
     app._ipython_display_()
-    assert [kind for kind, _ in shown] == ["display", "display"]
-    assert shown[0][1] is app.figure and isinstance(shown[1][1], widgets.Widget)
+    assert [kind for kind, *_ in shown] == ["display", "display", "display"]
+    assert shown[0][1] is app.figure and isinstance(shown[2][1], widgets.Widget)
+    alt = shown[0][2]["image/png"]["alt"]
+    assert alt.startswith(app.plot.title) and app.plot.readout() in alt  # the picture's alt text
+    assert shown[1][1]._repr_html_() == app.readout.value  # the result as text
     app.controls["w2"].value = 7.0
-    assert shown[-1] == ("update", app.figure)
+    updates = [entry for entry in shown if entry[0] == "update"]
+    assert updates[0][1] is app.figure and "alt" in updates[0][2]["image/png"]
 
 
 def control_values(control):

@@ -6,6 +6,7 @@ refresh the README's screenshots in docs/screenshots/.
 
 from __future__ import annotations
 
+import http.client
 import io
 import os
 import shutil
@@ -253,20 +254,27 @@ def test_classroom_server_culls_closed_pages_and_caps_kernels(tmp_path, browser)
     no more than --max-kernels run at once (Voilà alone keeps one per page ever opened)."""
     lessons = tmp_path / "lessons"
     shutil.copytree(ROOT / "lessons", lessons)
-    port = free_port()
-    command = [
-        sys.executable, "-m", "interp.classroom", "--idle", "3", "--interval", "1",
-        "--max-kernels", "2", "--no-browser", f"--port={port}", "--Voila.ip=127.0.0.1",
-        str(lessons / "03_the_st_mapping.ipynb"),
-    ]  # fmt: skip
     env = {**os.environ, "JUPYTER_CONFIG_DIR": str(tmp_path / "config")}
     env.pop("MPLBACKEND", None)
     log = tmp_path / "voila.log"
-    with log.open("w") as out:
-        process = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT)
-    url = f"http://127.0.0.1:{port}/"
+    for _attempt in range(3):  # a free port can be taken (e.g. by a kernel) before Voilà binds it
+        port = free_port()
+        command = [
+            sys.executable, "-m", "interp.classroom", "--idle", "3", "--interval", "1",
+            "--max-kernels", "2", "--no-browser", f"--port={port}", "--Voila.ip=127.0.0.1",
+            "--Voila.port_retries=0", str(lessons / "03_the_st_mapping.ipynb"),
+        ]  # fmt: skip
+        with log.open("w") as out:
+            process = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT)
+        url = f"http://127.0.0.1:{port}/"
+        try:
+            wait_for_server(url, process, log)
+            break
+        except (RuntimeError, http.client.HTTPException):  # the port was taken: another
+            process.kill()
+    else:
+        raise AssertionError(f"Voilà did not start:\n{log.read_text()[-2000:]}")
     try:
-        wait_for_server(url, process, log)
         opened = []
         for _ in range(2):  # two students keep their pages open: two kernels
             page = browser.new_page()

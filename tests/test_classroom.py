@@ -87,4 +87,8 @@ def test_presentation_flag_from_the_environment():
 def test_make_present_serves_the_lessons_with_voila_in_presentation_mode():
     makefile = (ROOT / "Makefile").read_text()
     recipe = re.search(r"^present:.*\n\t(.+)$", makefile, re.M).group(1)
-    assert "INTERP_PRESENTATION=1" in recipe and "voila lessons" in recipe
+    assert "INTERP_PRESENTATION=1" in recipe and "-m interp.classroom lessons" in recipe
+    # interp.classroom is Voilà with culling and a cap (tests/test_browser.py serves a page).
+    from interp.classroom import voila_arguments
+
+    assert any("ClassroomKernelManager" in a for a in voila_arguments(300, 60, 30))

@@ -1,49 +1,205 @@
-"""The lessons: stored without outputs, and each runs top to bottom in a fresh kernel with no
-error and no warning."""
+"""The lessons, in both editions, made from one source.
+
+- source/lessons/: every lesson has its exercises with their solutions (at least one, and the recap
+  questions last), and every "Try this" prompt a written answer;
+- lessons/ (the student edition, committed) is exactly what interp.editions makes of the source,
+  stored without outputs; it runs top to bottom in a fresh kernel with no error and no warning, each
+  checker answering "not written yet";
+- the teacher edition runs with every checker saying ✓, and exports to HTML;
+- nbgrader takes the source as an assignment unchanged, and makes the same exercise cells.
+"""
 
 from __future__ import annotations
 
 import json
+import os
+import re
+import shutil
+import subprocess
 from pathlib import Path
 
+import nbformat
 import pytest
+from nbconvert import HTMLExporter
+
+from interp import check, editions
 
 from helpers import run_lesson
 
-LESSONS = sorted((Path(__file__).resolve().parent.parent / "lessons").glob("*.ipynb"))
+ROOT = Path(__file__).resolve().parent.parent
+LESSONS = sorted((ROOT / "lessons").glob("*.ipynb"))
+SOURCES = editions.sources(ROOT)
+NBGRADER = ROOT / ".venv-nbgrader" / "bin" / "nbgrader"
+
+#: The lessons: eight, and the cheat sheet (lesson 9, which has no "Try this" prompts).
+COUNT = 9
+#: "Try this" prompts across the lessons.
+PROMPTS = 36
 
 
-def test_there_are_seven_lessons():
-    assert [p.name[:3] for p in LESSONS] == [f"0{k}_" for k in range(1, 8)]
+def source(path: Path) -> nbformat.NotebookNode:
+    return nbformat.read(path, as_version=4)
+
+
+def bullets(markdown: str) -> int:
+    return len(re.findall(r"^- ", markdown, re.M))
+
+
+def test_there_are_nine_lessons_from_nine_sources():
+    assert [p.name[:3] for p in LESSONS] == [f"0{k}_" for k in range(1, COUNT + 1)]
+    assert [p.name for p in SOURCES] == [p.name for p in LESSONS]
+
+
+def test_the_student_edition_is_what_the_generator_makes():
+    assert editions.stale_student(ROOT) == [], "run `python -m interp.editions student`"
+
+
+def exercises(notebook: nbformat.NotebookNode) -> list[str]:
+    return [c.source for c in notebook.cells if editions.is_exercise(c)]
+
+
+@pytest.mark.parametrize("path", SOURCES, ids=lambda p: p.stem)
+def test_every_lesson_has_solved_exercises_and_every_prompt_an_answer(path):
+    notebook = source(path)
+    assert len(exercises(notebook)) >= 1
+    for exercise in exercises(notebook):
+        assert exercise.count(editions.BEGIN) == exercise.count(editions.END) == 1
+        solution = exercise.split(editions.BEGIN)[1].split(editions.END)[0]
+        assert "return" in solution
+        assert re.search(r"\ncheck\.\w+\(\w+\)$", exercise), "the checker call ends the cell"
+    lesson = int(path.name[:2])
+    assert exercises(notebook)[-1].endswith(f"check.recap_{lesson}(my_answers)"), "recap last"
+    # every list of prompts is followed by an answer cell with one answer per prompt
+    prompts = [i for i, c in enumerate(notebook.cells) if "**Try this**" in c.source]
+    answers = [i for i, c in enumerate(notebook.cells) if editions.is_answer(c)]
+    assert len(prompts) == len(answers) >= (0 if lesson == COUNT else 1)
+    ends = [*prompts[1:], len(notebook.cells)][: len(prompts)]
+    for p, a, after in zip(prompts, answers, ends, strict=True):
+        assert p < a < after
+        asked = bullets(notebook.cells[p].source.split("**Try this**")[1])
+        answer = notebook.cells[a].source
+        assert answer.count(editions.BEGIN) == answer.count(editions.END) == 1
+        assert bullets(answer) == asked, f"{asked} prompts, {bullets(answer)} answers"
+    # markers only where nbgrader expects them
+    for cell in notebook.cells:
+        if not editions.is_solution(cell):
+            assert editions.BEGIN not in cell.source and editions.END not in cell.source
+
+
+def test_every_prompt_is_counted():
+    total = 0
+    for path in SOURCES:
+        for cell in source(path).cells:
+            if "**Try this**" in cell.source:
+                total += bullets(cell.source.split("**Try this**")[1])
+    assert total == PROMPTS
 
 
 @pytest.mark.parametrize("path", LESSONS, ids=lambda p: p.stem)
-def test_stored_without_outputs(path):
+def test_student_edition_is_blank_and_stored_without_outputs(path):
     notebook = json.loads(path.read_text())
-    for cell in notebook["cells"]:
-        if cell["cell_type"] == "code":
-            assert cell["outputs"] == [] and cell["execution_count"] is None, path.name
+    ids = [cell["id"] for cell in notebook["cells"]]
+    assert len(set(ids)) == len(ids) and all(i.startswith(path.name[:2] + "-") for i in ids), ids
+    code = [cell for cell in notebook["cells"] if cell["cell_type"] == "code"]
+    assert "".join(code[0]["source"]).startswith("%matplotlib widget")
+    for cell in code:
+        assert cell["outputs"] == [] and cell["execution_count"] is None, path.name
+    text = path.read_text()
+    assert "SOLUTION" not in text and "**Answers**" not in text and "nbgrader" not in text
+    blank = [c for c in code if "raise NotImplementedError()" in "".join(c["source"])]
+    solved = exercises(source(ROOT / "source" / "lessons" / path.name))
+    assert len(blank) == len(solved)
+    for exercise in blank:
+        assert '"""' in "".join(exercise["source"]), "a docstring says what to return"
+    # no line of any solution is printed anywhere in the student edition
+    student_text = "\n".join("".join(c["source"]) for c in notebook["cells"])
+    for solution in solved:
+        body = solution.split(editions.BEGIN)[1].split(editions.END)[0]
+        for line in body.strip().splitlines():
+            assert re.sub(r"\s", "", line) not in re.sub(r"\s", "", student_text), line
 
 
 @pytest.mark.parametrize("path", LESSONS, ids=lambda p: p.stem)
-def test_runs_clean_in_a_fresh_kernel(path, tmp_path):
+def test_student_edition_runs_clean_and_says_not_written_yet(path, tmp_path):
     notebook = run_lesson(path, tmp_path)
-    problems = []
-    for index, cell in enumerate(notebook.cells):
-        for output in cell.get("outputs", []):
-            if output["output_type"] == "error" or (
-                output["output_type"] == "stream" and output["name"] == "stderr"
-            ):
-                problems.append((index, output.get("text") or output.get("evalue")))
-    assert not problems, problems
-    # Every exercise cell's checker says the reference answer is right.
-    verdicts = [
-        output["data"]["text/plain"]
-        for cell in notebook.cells
-        for output in cell.get("outputs", [])
-        if output["output_type"] == "execute_result" and "check." in cell.source
-    ]
-    assert verdicts and all(v.startswith("✓") for v in verdicts), verdicts
+    assert not editions.errors(notebook)
+    verdicts = editions.verdicts(notebook)
+    solved = exercises(source(ROOT / "source" / "lessons" / path.name))
+    assert verdicts == ["… " + check.NOT_WRITTEN] * len(solved), verdicts
+
+
+@pytest.mark.parametrize("path", SOURCES, ids=lambda p: p.stem)
+def test_teacher_edition_runs_with_every_exercise_right(path, tmp_path):
+    notebook = editions.teacher_edition(source(path))
+    editions.run(notebook, tmp_path)
+    assert not editions.errors(notebook)
+    verdicts = editions.verdicts(notebook)
+    assert len(verdicts) == len(exercises(source(path))), verdicts
+    assert all(v.startswith("✓") for v in verdicts), verdicts
+    assert notebook.cells[1].source.startswith("%matplotlib widget"), "kept live for a rerun"
+    html, _ = HTMLExporter().from_notebook_node(notebook)
+    assert "Teacher edition" in html and ("<img" in html or int(path.name[:2]) == COUNT)
+    answers = [c.source for c in notebook.cells if c.source.startswith("**Answers**")]
+    assert answers or int(path.name[:2]) == COUNT
+    assert all(editions.BEGIN not in a for a in answers)
+    for a in answers:
+        assert a.split("\n- ")[1].strip(), "a written answer"
+
+
+def test_build_teacher_writes_notebooks_and_html(tmp_path):
+    """The `make teacher` code path, on the shortest lesson."""
+    root = tmp_path / "repo"
+    (root / "source" / "lessons").mkdir(parents=True)
+    shutil.copy(SOURCES[0], root / "source" / "lessons")
+    written = editions.build_teacher(root, root / "teacher")
+    assert sorted(p.name for p in written) == [SOURCES[0].stem + ".html", SOURCES[0].name]
+    executed = source(root / "teacher" / SOURCES[0].name)
+    assert editions.verdicts(executed)[0].startswith("✓")
+
+
+def test_generator_command_line(tmp_path, capsys):
+    root = tmp_path / "repo"
+    shutil.copytree(ROOT / "source", root / "source")
+    (root / "lessons").mkdir()
+    assert editions.main(["check", "--root", str(root)]) == 1
+    assert editions.main(["student", "--root", str(root)]) == 0
+    assert editions.main(["check", "--root", str(root)]) == 0
+    for path in LESSONS:
+        assert (root / "lessons" / path.name).read_text() == path.read_text()
+    assert "matches" in capsys.readouterr().out
+
+
+def test_nbgrader_generates_the_assignment_from_the_sources(tmp_path):
+    if not NBGRADER.exists():
+        if os.environ.get("CI"):
+            pytest.fail(f"CI must have nbgrader at {NBGRADER} (make test installs it)")
+        pytest.skip(f"no nbgrader at {NBGRADER} (make test installs it)")
+    shutil.copytree(ROOT / "source", tmp_path / "source")
+    shutil.copy(ROOT / "nbgrader_config.py", tmp_path)
+    # nbgrader runs alembic (for its gradebook) as a subprocess: its venv's bin must be on PATH
+    env = {**os.environ, "PATH": f"{NBGRADER.parent}{os.pathsep}{os.environ['PATH']}"}
+    env["JUPYTER_CONFIG_DIR"] = str(tmp_path / "jupyter")
+    result = subprocess.run(
+        [str(NBGRADER), "generate_assignment", "lessons", "--force"],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert result.returncode == 0, result.stderr[-3000:]
+    for path in SOURCES:
+        released = source(tmp_path / "release" / "lessons" / path.name)
+        student = editions.student_edition(source(path))
+        mine = {c.id: c.source for c in student.cells}
+        for cell in released.cells:
+            assert "SOLUTION" not in cell.source
+            if editions.is_exercise(cell):
+                assert cell.source == mine[cell.id], "nbgrader and interp.editions agree"
+            elif editions.is_answer(cell):
+                assert "YOUR ANSWER HERE" in cell.source
+            else:
+                assert cell.source == mine[cell.id]
 
 
 @pytest.mark.parametrize("name", ["01_the_problem", "06_checkerboards"])

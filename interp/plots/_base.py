@@ -7,6 +7,15 @@ with, so a typo raises instead of being silently ignored.
 
 from __future__ import annotations
 
+from matplotlib.artist import Artist
+
+
+def _same(a: object, b: object) -> bool:
+    try:
+        return bool(a == b)
+    except (TypeError, ValueError):  # e.g. arrays: compare as changed
+        return False
+
 
 class Plot:
     """Base of the figure objects in :mod:`interp.plots`.
@@ -33,16 +42,30 @@ class Plot:
         self.redraw()
 
     def update(self, **params: object) -> None:
-        """Change some parameters and redraw; unknown names raise ``TypeError``."""
+        """Change some parameters and redraw; unknown names raise ``TypeError``.
+
+        Nothing is redrawn when every value is the one the plot already shows (a figure of two
+        plots, one slider moving, recomputes only the plot that slider drives).
+        """
         for name in params:
             if name not in self.params:
                 raise TypeError(
                     f"{type(self).__name__}.update() has no parameter {name!r}; "
                     f"it accepts: {', '.join(self.params)}"
                 )
+        if all(_same(self.params[name], value) for name, value in params.items()):
+            return
         self.params.update(params)
         self.redraw()
 
     def redraw(self) -> None:  # pragma: no cover - every plot overrides it
         """Draw the changing parts from ``self.params``."""
         raise NotImplementedError
+
+    @property
+    def dynamic(self) -> list[Artist] | None:
+        """The artists :meth:`redraw` changes, so a live canvas can redraw just those over a
+        saved background (blitting) while nothing else changes; None if the plot cannot say
+        (then every change redraws the whole figure). Axis limits and legends that a redraw
+        changes are noticed by the canvas itself (see :mod:`interp.apps._live`)."""
+        return None

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import functools
 from contextlib import AbstractContextManager
 from pathlib import Path
 
+import matplotlib
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.axes import Axes
@@ -27,9 +29,16 @@ OTHERS = [
 MARKERS = 9
 
 
-def styled() -> AbstractContextManager:
-    """``with styled(): ...`` draws with the package's style sheet."""
-    return plt.style.context(STYLE)
+def styled(**rc: object) -> AbstractContextManager:
+    """``with styled(): ...`` draws with the package's style sheet (and any rc settings given,
+    e.g. ``styled(**{"font.size": 13.5})``)."""
+    return plt.rc_context({**_style_sheet(), **rc})
+
+
+@functools.cache
+def _style_sheet() -> dict:
+    """The style sheet's settings, read once."""
+    return dict(matplotlib.rc_params_from_file(STYLE, use_default_template=False))
 
 
 def markevery(n: int) -> int:
@@ -38,11 +47,42 @@ def markevery(n: int) -> int:
 
 
 def fit_y(ax: Axes, *values: object) -> None:
-    """Set the y range to span ``values`` (numbers or arrays), with a 5% margin."""
+    """Set the y range to span ``values`` (numbers or arrays), with a margin of 5% or more.
+
+    The ends are rounded outwards to a tenth of the range's order of magnitude, so that a
+    slider's small steps leave the axis as it is (and a live figure need not redraw it).
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> ax = plt.subplots()[1]
+    >>> fit_y(ax, 0.0, 1.0); [float(y) for y in ax.get_ylim()]
+    [-0.1, 1.1]
+    >>> fit_y(ax, 0.02, 0.97); [float(y) for y in ax.get_ylim()]   # a small change: the same
+    [-0.1, 1.1]
+    """
     every = np.concatenate([np.ravel(v) for v in values])
     low, high = float(every.min()), float(every.max())
-    pad = 0.05 * max(high - low, 1e-9)
-    ax.set_ylim(low - pad, high + pad)
+    span = max(high - low, 1e-9)
+    step = 10.0 ** np.floor(np.log10(span)) / 10
+    low = np.floor(round((low - 0.05 * span) / step, 9)) * step
+    high = np.ceil(round((high + 0.05 * span) / step, 9)) * step
+    ax.set_ylim(round(float(low), 12), round(float(high), 12))
+
+
+def nice_ceiling(x: float) -> float:
+    """The smallest of 1, 1.5, 2, 3, 4, 5, 6, 8 times a power of ten that is >= x (x > 0).
+
+    Examples
+    --------
+    >>> nice_ceiling(0.33), nice_ceiling(7.0), nice_ceiling(0.05)
+    (0.4, 8.0, 0.05)
+    """
+    power = 10.0 ** np.floor(np.log10(x))
+    for m in (1, 1.5, 2, 3, 4, 5, 6, 8, 10):
+        if m * power >= x * (1 - 1e-12):
+            return round(float(m * power), 12)
+    raise AssertionError("unreachable")  # pragma: no cover
 
 
 def bare(ax: Axes) -> None:

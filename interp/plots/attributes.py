@@ -77,6 +77,10 @@ class MistakesAlongALine(Plot):
             self.lines[name].set_data(s, y)
         fit_y(self.ax, *curves.values())
 
+    @property
+    def dynamic(self) -> list:
+        return list(self.lines.values())
+
 
 class ClipVertexMistake(Plot):
     """A segment from A (in front) to B (behind the near plane), clipped to A-C at the near
@@ -129,6 +133,10 @@ class ClipVertexMistake(Plot):
         )
         fit_y(self.ax, p["a1"], p["a2"])
 
+    @property
+    def dynamic(self) -> list:
+        return [self.right, self.wrong]
+
 
 #: Colours of the ground quad's corners (u, v) = (0, 0), (1, 0), (0, 1), (1, 1): red, green,
 #: yellow and blue, so that its first triangle, corners 0, 1 and 3, is red, green and blue and its
@@ -173,3 +181,7 @@ class ColourTriangle(Plot):
         )
         self.image.set_data(np.where(covered[..., None], np.clip(colours, 0, 1), 1.0))
         self.ax.set_title(mode)
+
+    @property
+    def dynamic(self) -> list:
+        return [self.image, self.ax.title]

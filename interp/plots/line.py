@@ -13,7 +13,7 @@ from matplotlib.collections import LineCollection
 
 from interp import lerp
 from interp.plots._base import Plot
-from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery
+from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery, nice_ceiling
 
 Point = tuple[float, float]
 
@@ -29,6 +29,9 @@ class LineView(Plot):
     Shows the midpoint M of AB and its image m, and the midpoint c of the image ab with the
     point C of AB that it shows: c and m differ unless A and B are equally deep. With
     ``samples`` > 0, also equally spaced image points and their rays fanning out onto AB.
+
+    The whole line through A and B is drawn faintly: Lengyel's ``a x + b z = c``. When it passes
+    through the eye (``c = 0``) the segment is seen edge-on and its image is a single point.
 
     Parameters
     ----------
@@ -70,6 +73,7 @@ class LineView(Plot):
         ax.plot([0], [0], marker=">", color="black", markersize=9, linestyle="none")
         ax.annotate("eye", (0, 0), xytext=(-4, -12), textcoords="offset points", fontsize="small")
         (self.plane,) = ax.plot([], [], color="0.4", linewidth=2.5, solid_capstyle="butt")
+        (self.carrier,) = ax.plot([], [], color="0.7", linewidth=0.8, linestyle=(0, (6, 3)))
         (self.segment,) = ax.plot([], [], color="black", linewidth=2)
         self.rays = [ax.plot([], [], color="0.6", linewidth=0.8)[0] for _ in range(2)]
         self.fan = LineCollection([], colors=OTHERS[0]["color"], linewidths=0.6, alpha=0.8)
@@ -127,6 +131,15 @@ class LineView(Plot):
             "c": np.array([c, -d]),
         }
 
+        # Lengyel's line a x + b z = c through A and B: (a, b) = (z2 - z1, x1 - x2).
+        self.c = float(A[0] * B[1] - B[0] * A[1])
+        if np.array_equal(A, B):
+            self.carrier.set_data([], [])
+        else:
+            k = np.array([-100.0, 100.0])
+            line = A + k[:, None] * (B - A) / np.hypot(*(B - A))
+            self.carrier.set_data(-line[:, 1], line[:, 0])
+
         x_max = self.ax.get_ylim()[1]
         self.plane.set_data([d, d], [-x_max, x_max])
         self.segment.set_data([w1, w2], [A[0], B[0]])
@@ -150,6 +163,23 @@ class LineView(Plot):
         else:
             self.fan.set_segments([])
             self.hits.set_data([], [])
+
+    @property
+    def dynamic(self) -> list:
+        return [
+            self.plane,
+            self.carrier,
+            self.segment,
+            *self.rays,
+            self.fan,
+            self.hits,
+            self.m_ray,
+            self.c_ray,
+            *self.markers.values(),
+            *self.labels.values(),
+            self.image_points,
+            self.ax.title,
+        ]
 
     def nearest_endpoint(self, w: float, x: float, radius: float) -> str | None:
         """``"A"`` or ``"B"`` if the plot point (w, x) is within ``radius`` of it, else None."""
@@ -205,6 +235,10 @@ class ImageStrip(Plot):
         self.affine.set_data(self.s, lerp.lerp_affine(p["a1"], p["a2"], self.s))
         fit_y(self.ax, p["a1"], p["a2"])
 
+    @property
+    def dynamic(self) -> list:
+        return [self.correct, self.affine]
+
 
 class STCurve(Plot):
     """The mapping from screen parameter s to object parameter t, with samples marked.
@@ -252,6 +286,10 @@ class STCurve(Plot):
         s = (np.arange(n) + 0.5) / n if n else np.array([])
         self.samples.set_data(s, lerp.t_from_s(s, w1, w2) if n else [])
 
+    @property
+    def dynamic(self) -> list:
+        return [self.curve, self.samples]
+
 
 class STFamily(Plot):
     """The family of s-t curves for depth ratios ``w2/w1``, the current one in bold.
@@ -292,6 +330,10 @@ class STFamily(Plot):
     def redraw(self) -> None:
         """Draw the bold curve for the current ``ratio`` = w2 / w1."""
         self.current.set_data(self.s, lerp.t_from_s(self.s, 1.0, float(self.params["ratio"])))
+
+    @property
+    def dynamic(self) -> list:
+        return [self.current]
 
 
 class GapPlot(Plot):
@@ -344,9 +386,13 @@ class GapPlot(Plot):
         self.measured = (float(self.s[k]), float(gap[k]))
         self.peak.set_data([self.derived[0]], [self.derived[1]])
         self.measured_peak.set_data([self.measured[0]], [self.measured[1]])
-        self.ax.set_ylim(0, max(0.05, 1.15 * self.derived[1]))
+        self.ax.set_ylim(0, nice_ceiling(max(0.05, 1.1 * self.derived[1])))
         self.ax.set_title(
-            f"derived: s* = √w2/(√w1+√w2) = {self.derived[0]:.3f}, gap {self.derived[1]:.3f}\n"
-            f"sampled: s = {self.measured[0]:.3f}, gap {self.measured[1]:.3f}",
+            f"derived peak: s* = {self.derived[0]:.3f}, gap {self.derived[1]:.3f}\n"
+            f"largest sample: s = {self.measured[0]:.3f}, gap {self.measured[1]:.3f}",
             fontsize="small",
         )
+
+    @property
+    def dynamic(self) -> list:
+        return [self.curve, self.peak, self.measured_peak, self.ax.title]

@@ -1,0 +1,215 @@
+"""Making a live ipympl figure answer a slider within a frame or two.
+
+A slider step must reach the screen fast, and a fast drag must not leave a queue of stale frames
+behind it. Three things make that so (measured in the browser by ``make bench-browser``):
+
+- **Blitting.** The figure's static parts (axes, ticks, labels, legends, colorbars) are drawn
+  once and kept as a background; a step restores it and draws only the artists the figure's
+  plots change (:attr:`interp.plots.LessonFigure.dynamic`), which is a fraction of a full
+  redraw. A change of axis limits, legend or size is noticed and redraws everything once.
+- **Latest value wins.** A slider change only marks the figure out of date; the drawing happens
+  once the kernel has taken in the messages already waiting, with the newest values. A drag
+  never builds a backlog, and the last value is always drawn.
+- **Cheap, whole frames.** Each frame is the whole figure as a PNG at the fastest zlib level
+  (see :func:`_frame_image`): about the cost of ipympl's default diff frames, and a frame the
+  browser drops can never leave a figure half drawn.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import io
+from collections.abc import Callable
+from types import MethodType
+
+import numpy as np
+from matplotlib.artist import Artist
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+from matplotlib.text import Text
+from PIL import Image
+
+#: zlib level of live frames (PIL's default is 6).
+PNG_LEVEL = 1
+#: How long a pending redraw waits for more slider messages to arrive, in seconds.
+SETTLE = 0.004
+
+
+def static_key(figure: Figure) -> tuple:
+    """What must stay the same for a saved background to still be right.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> figure, ax = plt.subplots()
+    >>> before = static_key(figure)
+    >>> _ = ax.set_ylim(0, 2)
+    >>> static_key(figure) == before
+    False
+    """
+    key: list = [tuple(figure.bbox.bounds), figure.canvas.device_pixel_ratio]
+    for ax in figure.axes:
+        legend = ax.get_legend()
+        key.append(
+            (
+                ax.get_xlim(),
+                ax.get_ylim(),
+                ax.get_xscale(),
+                ax.get_yscale(),
+                id(legend),
+                tuple(t.get_text() for t in legend.get_texts()) if legend else (),
+                len(ax.texts),
+            )
+        )
+    return tuple(key)
+
+
+class Blitter:
+    """Redraws a figure over a saved background, or whole when the background is out of date.
+
+    Parameters
+    ----------
+    figure : Figure
+        On a canvas that can copy and restore regions (Agg, and so ipympl's).
+    dynamic : list of Artist, or None
+        The artists that change; None to always redraw the whole figure.
+
+    Notes
+    -----
+    The blit draws, in each axes, the dynamic artists and every static one stacked above them
+    (spines, legends), in the order a full draw uses; the background is everything else. So a
+    blitted frame matches a full redraw.
+    """
+
+    def __init__(self, figure: Figure, dynamic: list[Artist] | None) -> None:
+        self.figure = figure
+        self.dynamic = dynamic
+        self.background = None
+        self.key: tuple | None = None
+        self.layers: list[Artist] = []
+        self.full_draws = self.blits = 0
+
+    def draw(self) -> None:
+        """Show the figure's current state."""
+        canvas = self.figure.canvas
+        if self.dynamic is None:
+            self.full_draws += 1
+            canvas.draw()
+            return
+        key = static_key(self.figure)
+        if self.background is None or key != self.key:
+            self._capture_background()
+            self.key = key
+            self.full_draws += 1
+        else:
+            canvas.restore_region(self.background)
+            self.blits += 1
+        for artist in self.layers:
+            self.figure.draw_artist(artist)
+        canvas.blit(self.figure.bbox)
+
+    def _capture_background(self) -> None:
+        """Render everything but the layers a blit draws, and keep that picture."""
+        self.layers = self._layers()
+        shown = [(a, a.get_visible()) for a in self.layers]
+        # A hidden title has no extent, and matplotlib would then lift it off the axes: keep
+        # where the titles are.
+        places = [(a, a.get_position()) for a in self.layers if isinstance(a, Text)]
+        for artist in self.layers:
+            artist.set_visible(False)
+        try:
+            FigureCanvasAgg.draw(self.figure.canvas)  # render only: ipympl sends no frame yet
+        finally:
+            for artist, visible in shown:
+                artist.set_visible(visible)
+            for text, place in places:
+                text.set_position(place)
+        self.background = self.figure.canvas.copy_from_bbox(self.figure.bbox)
+
+    def _layers(self) -> list[Artist]:
+        """The artists a blit draws: dynamic ones, and static ones above them, in draw order.
+
+        As in ``Axes.draw``: spines only where the axes has its frame and axis on. The axis
+        objects themselves (ticks, tick labels) are left in the background: the style puts
+        ticks outside the axes, where no clipped artist reaches.
+        """
+        dynamic = {id(a) for a in self.dynamic}
+        layers: list[Artist] = []
+        for ax in self.figure.axes:
+            children = ax.get_children()
+            mine = [a for a in children if id(a) in dynamic]
+            if not mine:
+                continue
+            lowest = min(a.get_zorder() for a in mine)
+            framed = ax.axison and ax.get_frame_on()
+            skip = {id(ax.patch), *map(id, ax._axis_map.values())}
+            if not framed:
+                skip |= set(map(id, ax.spines.values()))
+            above = [
+                a
+                for a in children
+                if id(a) in dynamic
+                or (id(a) not in skip and a.get_visible() and a.get_zorder() > lowest)
+            ]
+            layers += sorted(above, key=lambda a: a.get_zorder())  # stable, as Axes.draw sorts
+        in_axes = {id(a) for a in layers}
+        layers += [a for a in self.dynamic if id(a) not in in_axes]
+        return layers
+
+
+class Coalescer:
+    """Calls ``draw`` once for any number of :meth:`request` calls that arrive meanwhile.
+
+    Inside a running event loop (a kernel), a request schedules ``draw`` a moment later unless
+    one is already scheduled; requests arriving before it runs are absorbed, so ``draw`` sees
+    only the newest state. Without a running loop (tests, scripts) ``draw`` runs at once.
+    """
+
+    def __init__(self, draw: Callable[[], None], settle: float = SETTLE) -> None:
+        self._draw = draw
+        self._settle = settle
+        self._scheduled = False
+        self.requests = self.draws = 0
+
+    def request(self) -> None:
+        """The state changed: draw it, soon."""
+        self.requests += 1
+        try:
+            loop = asyncio.get_running_loop()
+        except RuntimeError:
+            self._run()
+            return
+        if not self._scheduled:
+            self._scheduled = True
+            loop.call_later(self._settle, self._run)
+
+    def _run(self) -> None:
+        self._scheduled = False
+        self.draws += 1
+        self._draw()
+
+
+def _frame_image(canvas: object) -> bytes | None:
+    """The frame to send: the whole figure as a PNG at :data:`PNG_LEVEL`.
+
+    Replaces matplotlib's ``FigureCanvasWebAggCore.get_diff_image``, which sends only the pixels
+    that changed since the last frame. ipympl's view drops a frame that is still loading when
+    the next one arrives; with frames sent as fast as the kernel draws them, a lost full frame
+    followed by a diff left a figure blank but for the changed pixels. A whole frame at zlib
+    level 1 costs about what a diff did at the default level 6, and any frame stands alone.
+    """
+    if not canvas._png_is_old:
+        return None
+    pixels = np.asarray(canvas.get_renderer().buffer_rgba())
+    canvas.set_image_mode("full")
+    canvas._force_full = False
+    canvas._png_is_old = False
+    with io.BytesIO() as png:
+        Image.fromarray(pixels).save(png, format="png", compress_level=PNG_LEVEL)
+        return png.getvalue()
+
+
+def cheap_frames(canvas: object) -> None:
+    """Make an ipympl canvas send whole frames encoded at :data:`PNG_LEVEL`."""
+    if hasattr(canvas, "get_diff_image"):
+        canvas.get_diff_image = MethodType(_frame_image, canvas)
