@@ -22,6 +22,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 CHROMIUM = "/usr/bin/chromium"
 CHROMIUM_ARGS = [
+    "--headless",  # Playwright adds it too (headless=True); said here for whoever reads the log
     "--no-sandbox",
     "--disable-gpu",
     "--disable-quic",
@@ -55,19 +56,30 @@ def _wait_for(url: str, process: subprocess.Popen, log: Path, seconds: float = 9
 
 @contextlib.contextmanager
 def server(
-    kind: str, workdir: Path, notebook: str | None = None, env: dict[str, str] | None = None
+    kind: str,
+    workdir: Path,
+    notebook: str | None = None,
+    env: dict[str, str] | None = None,
+    tree: Path = ROOT,
 ) -> Iterator[str]:
     """Start ``jupyter lab`` or ``voila`` on a copy of the lessons; yield its base URL.
 
     ``env`` adds variables to the server's environment (and so its kernels'), e.g.
     ``{"INTERP_PRESENTATION": "1"}``. Voilà without ``notebook`` serves the whole folder:
     each lesson is then at ``/voila/render/NAME.ipynb``.
+
+    ``tree`` is the checkout whose lessons are served and whose ``interp`` the kernels import
+    (first on their PYTHONPATH, ahead of whatever ``interp`` the environment has installed):
+    this one by default, so the tests test the code beside them; another checkout to measure
+    that one (``tests/bench_browser.py --tree``).
     """
     lessons = workdir / "lessons"
-    shutil.copytree(ROOT / "lessons", lessons)
+    shutil.copytree(tree / "lessons", lessons)
+    path = os.environ.get("PYTHONPATH", "")
     env = {
         **os.environ,
         **(env or {}),
+        "PYTHONPATH": os.pathsep.join([str(tree), *([path] if path else [])]),
         "JUPYTER_CONFIG_DIR": str(workdir / "config"),
         "JUPYTER_RUNTIME_DIR": str(workdir / "runtime"),
         "JUPYTERLAB_WORKSPACES_DIR": str(workdir / "workspaces"),
@@ -127,6 +139,28 @@ def server(
             process.wait(timeout=15)
         except subprocess.TimeoutExpired:
             process.kill()
+
+
+def sync_api():
+    """Playwright's sync API. Without Playwright the browser tests are skipped, but not in CI
+    (``CI`` set): there every browser test must run, so the import error is raised."""
+    if os.environ.get("CI"):
+        import playwright.sync_api
+
+        return playwright.sync_api
+    import pytest
+
+    return pytest.importorskip("playwright.sync_api")
+
+
+def need_chromium() -> None:
+    """Skip the calling test without Chromium at :data:`CHROMIUM`; in CI, fail instead."""
+    import pytest
+
+    if not os.path.exists(CHROMIUM):
+        if os.environ.get("CI"):
+            pytest.fail(f"CI must have Chromium at {CHROMIUM} (apt-get install chromium)")
+        pytest.skip(f"no Chromium at {CHROMIUM}")
 
 
 def chromium(playwright):
@@ -212,21 +246,27 @@ KERNEL_RUN = """async (code) => {
     return out;
 }"""
 
+#: A code cell that makes an app: ``apps.NAME()`` (an app of :data:`interp.apps.ALL`) or
+#: ``apps.App(registry.CLASS)`` (a registry figure without an app function of its own).
+APP_CELL = r"^apps\.(?:(\w+)\(\)|App\(registry\.(\w+)\))\s*$"
+
 #: Each code cell of the notebook on show that makes an app: tag its output with
-#: ``data-app=NAME`` and return ``[name, execution count]``.
-TAG_APPS = """() => {
+#: ``data-app=NAME`` and return ``[name, execution count]``. ``names`` maps what a cell calls
+#: (an app function or a registry class) to the app's name (see :func:`app_name`).
+TAG_APPS = """(names) => {
     const panel = window.jupyterapp.shell.currentWidget;
     const found = [];
     panel.content.widgets.forEach((cell) => {
         if (cell.model.type !== 'code') return;
-        const m = /^apps\\.(\\w+)\\(\\)\\s*$/m.exec(cell.model.sharedModel.getSource());
+        const m = new RegExp(APP_CELL, 'm').exec(cell.model.sharedModel.getSource());
         if (!m) return;
+        const name = names[m[1] || m[2]] || m[1] || m[2];
         const output = cell.node.querySelector('.jp-OutputArea-output');
-        if (output) output.setAttribute('data-app', m[1]);
-        found.push([m[1], cell.model.executionCount]);
+        if (output) output.setAttribute('data-app', name);
+        found.push([name, cell.model.executionCount]);
     });
     return found;
-}"""
+}""".replace("APP_CELL", json.dumps(APP_CELL))
 
 #: Python run in the kernel: the figure the cell's app (``Out[N]``) should show at its current
 #: control values, drawn by a fresh app of the same kind, independently of the live canvas (a
@@ -288,23 +328,64 @@ ALL_DRAWN = f"""() => Array.from(document.querySelectorAll('{VISIBLE} [data-app]
 }})"""
 
 
-def lesson_apps(notebook: str) -> list[str]:
-    """The apps a lesson makes, in order (its cells that are just ``apps.NAME()``)."""
+def app_name(called: str) -> str:
+    """The name of the app a cell makes, from what it calls: an app function's name as it is
+    (``checkerboards``), a registry class by its figure's name with underscores
+    (``LinearOnScreen`` -> ``linear_on_screen``). The names of :data:`interp.apps.ALL` follow
+    the same rule, so an app has one name however a lesson makes it."""
+    from interp.plots import registry
+
+    figure = getattr(registry, called, None)
+    if isinstance(figure, type) and issubclass(figure, registry.LessonFigure):
+        return figure.name.replace("-", "_")
+    return called
+
+
+def app_names() -> dict[str, str]:
+    """What cells may call -> the app's name, for :data:`TAG_APPS`."""
+    from interp.plots import registry
+
+    return {cls.__name__: app_name(cls.__name__) for cls in registry.FIGURES.values()}
+
+
+def figure_of(name: str):
+    """The registry figure class an app draws (app names use underscores, figures hyphens)."""
+    from interp.plots import registry
+
+    return registry.FIGURES[name.replace("_", "-")]
+
+
+def lesson_apps(notebook: str, folder: Path | None = None) -> list[str]:
+    """The apps a lesson makes, in order (its cells that are just ``apps.NAME()`` or
+    ``apps.App(registry.CLASS)``)."""
     import re
 
-    cells = json.loads((ROOT / "lessons" / notebook).read_text())["cells"]
+    cells = json.loads(((folder or ROOT / "lessons") / notebook).read_text())["cells"]
     names = []
     for cell in cells:
         if cell["cell_type"] == "code":
-            names += re.findall(r"^apps\.(\w+)\(\)\s*$", "".join(cell["source"]), re.M)
+            for function, cls in re.findall(APP_CELL, "".join(cell["source"]), re.M):
+                names.append(app_name(function or cls))
     return names
 
 
-def lessons() -> dict[str, list[str]]:
-    """Every lesson notebook and the apps it makes."""
-    return {
-        path.name: lesson_apps(path.name) for path in sorted((ROOT / "lessons").glob("*.ipynb"))
-    }
+def lessons(tree: Path = ROOT) -> dict[str, list[str]]:
+    """Every lesson notebook of ``tree`` that makes an app, and the apps it makes."""
+    found = {}
+    for path in sorted((tree / "lessons").glob("*.ipynb")):
+        names = lesson_apps(path.name, path.parent)
+        if names:
+            found[path.name] = names
+    return found
+
+
+#: Python run in the kernel: where its ``interp`` comes from.
+KERNEL_INTERP = "import interp, pathlib; print(pathlib.Path(interp.__file__).parent.parent)"
+
+
+def kernel_interp(page) -> Path:
+    """The checkout whose ``interp`` the kernel of the notebook on show imports."""
+    return Path(kernel_run(page, KERNEL_INTERP).strip())
 
 
 def open_lesson(
@@ -329,7 +410,7 @@ def open_lesson(
         timeout=30_000,
     )
     wait_idle(page, quiet_ms=500, timeout=180)
-    counts = dict(page.evaluate(TAG_APPS))
+    counts = dict(page.evaluate(TAG_APPS, app_names()))
     # Give every figure time to be drawn; a figure still blank after that is left for the
     # caller to see (and fail on).
     with contextlib.suppress(Exception):  # playwright's TimeoutError
@@ -496,11 +577,21 @@ def overflow(root) -> dict[str, int]:
 
 def write_all_apps_notebook(path: Path, names: list[str]) -> None:
     """A notebook that makes every app in ``names``, one cell each (for measuring layout in
-    Voilà with one kernel instead of one per lesson: Voilà lays out every notebook alike)."""
+    Voilà with one kernel instead of one per lesson: Voilà lays out every notebook alike).
+    Apps without a function in :data:`interp.apps.ALL` are made from their registry figure, as
+    their lessons make them."""
     import nbformat
 
-    cells = [nbformat.v4.new_code_cell("%matplotlib widget\nfrom interp import apps")]
-    cells += [nbformat.v4.new_code_cell(f"apps.{name}()") for name in names]
+    from interp import apps
+
+    def make(name: str) -> str:
+        if name in apps.ALL:
+            return f"apps.{name}()"
+        return f"apps.App(registry.{figure_of(name).__name__})"
+
+    setup = "%matplotlib widget\nfrom interp import apps\nfrom interp.plots import registry"
+    cells = [nbformat.v4.new_code_cell(setup)]
+    cells += [nbformat.v4.new_code_cell(make(name)) for name in names]
     notebook = nbformat.v4.new_notebook(cells=cells)
     notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3"}
     nbformat.write(notebook, path)
