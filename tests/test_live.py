@@ -4,6 +4,8 @@ drawn once, with the newest values."""
 from __future__ import annotations
 
 import asyncio
+import threading
+import time
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -82,3 +84,45 @@ def test_without_an_event_loop_each_change_draws_at_once():
     coalescer.request()
     coalescer.request()
     assert shown == [0, 1]
+
+
+def test_two_threads_drawing_one_figure_take_turns(monkeypatch):
+    """ipykernel 7 handles widget messages on a subshell thread beside the main one (JupyterLab
+    4.6 sends comm messages over subshells by default): a slider's redraw, ipympl's own full
+    draw and a cell's ``app.set`` can run at the same moment. Every blitted frame must still be
+    a whole picture of one state, equal to a full redraw at that state."""
+    app = apps.st_mapping()
+    monkeypatch.setattr(apps.App, "live", property(lambda self: True))  # blit, as with ipympl
+    canvas = app.figure.canvas
+    values = [4.0, 5.07, 5.6, 4.5, 6.1, 3.2, 2.0]  # limits and title change along the way
+    truth = {}
+    for value in values:
+        app.set(w2=value)
+        canvas.draw()
+        truth[value] = np.asarray(canvas.buffer_rgba()).copy()
+    frames = []
+    blit = canvas.blit
+
+    def recording_blit(bbox=None):  # the moment ipympl would encode and send a frame
+        frames.append((app.values["w2"], np.asarray(canvas.buffer_rgba()).copy()))
+        blit(bbox)
+
+    canvas.blit = recording_blit
+    stop = threading.Event()
+
+    def full_draws():  # as ipympl's 'draw' and 'refresh' messages do, on another thread
+        while not stop.is_set():
+            canvas.draw()
+            time.sleep(0.001)
+
+    other = threading.Thread(target=full_draws)
+    other.start()
+    try:
+        for value in values:
+            app.set(w2=value)
+    finally:
+        stop.set()
+        other.join()
+    assert len(frames) == len(values)
+    torn = [value for value, frame in frames if not np.array_equal(frame, truth[value])]
+    assert not torn, f"{len(torn)} of {len(frames)} frames were torn (w2 = {torn})"
