@@ -6,6 +6,7 @@ from __future__ import annotations
 import asyncio
 import threading
 import time
+import warnings
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -126,3 +127,34 @@ def test_two_threads_drawing_one_figure_take_turns(monkeypatch):
     assert len(frames) == len(values)
     torn = [value for value, frame in frames if not np.array_equal(frame, truth[value])]
     assert not torn, f"{len(torn)} of {len(frames)} frames were torn (w2 = {torn})"
+
+
+def test_a_frame_before_any_view_is_ready_keeps_the_static_picture():
+    """``app.set(...)`` in the cell that makes the app, under ``%matplotlib widget``, draws
+    before the browser has a view; ipympl then keeps a static picture (its data URL) from the
+    frame's pixels. It used to fail with "ValueError: cannot write empty image"."""
+    import base64
+    import io
+
+    import matplotlib
+    from matplotlib.figure import Figure
+    from PIL import Image
+
+    from interp.apps._live import cheap_frames
+
+    backend = matplotlib.get_backend()
+    try:
+        from ipympl.backend_nbagg import new_figure_manager_given_figure
+    finally:
+        plt.switch_backend(backend)  # importing ipympl's backend makes it pyplot's
+    figure = Figure(figsize=(2, 1))
+    figure.add_subplot().plot([0, 1])
+    with warnings.catch_warnings():  # ipympl's toolbar passes traitlets an argument it warns of
+        warnings.simplefilter("ignore", DeprecationWarning)
+        new_figure_manager_given_figure(1, figure)
+    canvas = figure.canvas
+    assert canvas.syncing_data_url  # no view yet
+    cheap_frames(canvas)
+    canvas.draw()  # sends a frame
+    picture = Image.open(io.BytesIO(base64.b64decode(canvas._data_url))).convert("RGBA")
+    np.testing.assert_array_equal(np.asarray(picture), np.asarray(canvas.buffer_rgba()))

@@ -211,6 +211,11 @@ def _frame_image(canvas: object) -> bytes | None:
     if not canvas._png_is_old:
         return None
     pixels = np.asarray(canvas.get_renderer().buffer_rgba())
+    if getattr(canvas, "syncing_data_url", False):
+        # No view has said it is ready (a cell still running, or no browser at all): ipympl
+        # then keeps a static picture of the figure from the last frame's pixels, which
+        # matplotlib's own diff frames would have left in ``_last_buff``.
+        canvas._last_buff = pixels.copy().view(np.uint32)[..., 0]
     canvas.set_image_mode("full")
     canvas._force_full = False
     canvas._png_is_old = False
