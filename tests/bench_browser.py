@@ -26,6 +26,13 @@ per display frame; Playwright's round trips are not in the figures.
 
 The machine is shared and noisy: the output starts with the CPU count and load average, before
 and after, so runs can be compared.
+
+``--tree DIR`` measures another checkout instead of this one: its lessons, and its ``interp`` in
+the kernels (first on their PYTHONPATH) and here (for the apps' parameters). So the same script
+measures the apps before and after a change, e.g. in a worktree at an older commit
+(``git worktree add ../before COMMIT``); the header says which ``interp`` the kernels imported
+and at which commit. Apps a checkout lacks are not measured; what an older app cannot do (no
+blitting, no readout) is simply not used.
 """
 
 from __future__ import annotations
@@ -46,12 +53,14 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from browser import (
     CHROMIUM,
     FRAME_PROBE,
+    ROOT,
     app_root,
     canvas_pixels,
     chromium,
     endpoint_a,
     figure_canvas,
     is_blank,
+    kernel_interp,
     kernel_truth,
     lessons,
     mismatch,
@@ -76,7 +85,9 @@ STEP_PARAM = {
     "colour_quad": "pitch",
     "checkerboards": "pitch",
     "uv_images": "pitch",
+    "linear_on_screen": "pitch",
     "barycentrics": "pitch",
+    "shader": "pitch",
     "clipping": "pitch",
     "approximations": "pitch",
 }
@@ -88,6 +99,9 @@ DRAGGABLE = ("the_problem", "projecting_a_line")
 TOLERANCE = 0.001
 
 VIEWPORT = {"width": 1500, "height": 1100}
+
+#: Where the first lesson's kernel imported ``interp`` from (filled in by :func:`bench_lesson`).
+KERNEL_INTERP: list[str] = []
 
 
 def machine_line() -> str:
@@ -114,6 +128,27 @@ def figure_param(name: str, param: str):
     from interp.plots import registry
 
     return registry.FIGURES[name.replace("_", "-")].PARAMS[param]
+
+
+def tree_line(tree: Path) -> str:
+    """The checkout measured: its path and commit."""
+    try:
+        out = subprocess.run(
+            ["git", "-C", str(tree), "log", "-1", "--format=%h %s"],
+            capture_output=True,
+            text=True,
+            timeout=20,
+        )
+        commit = out.stdout.strip()[:100] or "not a git checkout"
+        dirty = subprocess.run(
+            ["git", "-C", str(tree), "status", "--porcelain", "--untracked-files=no"],
+            capture_output=True,
+            text=True,
+            timeout=20,
+        ).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        commit, dirty = "unknown", ""
+    return f"{tree} at {commit}" + (" (with uncommitted changes)" if dirty else "")
 
 
 # ------------------------------------------------------------------------ in-page readings
@@ -338,6 +373,8 @@ def bench_lesson(context, base, notebook, names, args, label="", only=None) -> l
     for attempt in range(3):
         page = new_page(context)
         counts = open_lesson(page, base, notebook, drawn_within=10)
+        if not KERNEL_INTERP:
+            KERNEL_INTERP.append(str(kernel_interp(page)))
         blank = [n for n in names if is_blank(canvas_pixels(figure_canvas(app_root(page, n))))]
         if blank:
             blank_runs.append(blank)
@@ -412,15 +449,15 @@ SCREENS = (
 )
 
 
-def fit(browser) -> dict[str, dict[str, dict]]:
+def fit(browser, tree: Path = ROOT) -> dict[str, dict[str, dict]]:
     """For each app and screen: how many CSS px it reaches past the visible right edge
     (``browser.overflow``), and its height."""
-    names = [name for names in lessons().values() for name in names]
+    names = [name for names in lessons(tree).values() for name in names]
     found = {name: {} for name in names}
-    with tempfile.TemporaryDirectory() as tmp, server("lab", Path(tmp)) as base:
+    with tempfile.TemporaryDirectory() as tmp, server("lab", Path(tmp), tree=tree) as base:
         context = browser.new_context(viewport=SCREENS[0][1])
         context.add_init_script(FRAME_PROBE)
-        for notebook, apps in lessons().items():
+        for notebook, apps in lessons(tree).items():
             page = new_page(context)
             open_lesson(page, base, notebook, file_browser=True)
             for label, viewport in SCREENS[:2]:
@@ -433,7 +470,7 @@ def fit(browser) -> dict[str, dict[str, dict]]:
         context.close()
     with tempfile.TemporaryDirectory() as tmp:
         env = {"INTERP_PRESENTATION": "1"}
-        with server("voila", Path(tmp), env=env) as base:
+        with server("voila", Path(tmp), env=env, tree=tree) as base:
             write_all_apps_notebook(Path(tmp) / "lessons" / "all_apps.ipynb", names)
             label, viewport = SCREENS[2]
             context = browser.new_context(viewport=viewport)
@@ -473,7 +510,15 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("--no-dpr2", action="store_true", help="skip the HiDPI run")
     parser.add_argument("--no-endpoints", action="store_true", help="skip dragging A")
+    parser.add_argument(
+        "--tree",
+        type=Path,
+        default=ROOT,
+        help="the checkout to measure: its lessons and its interp (default: this one)",
+    )
     args = parser.parse_args(argv)
+    args.tree = args.tree.resolve()
+    sys.path.insert(0, str(args.tree))  # the apps' parameters come from the checkout measured
     if not os.path.exists(CHROMIUM):
         print(f"no Chromium at {CHROMIUM} (apt-get install chromium)", file=sys.stderr)
         return 2
@@ -482,7 +527,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.fit:
         with sync_playwright() as playwright:
             browser = chromium(playwright)
-            found = fit(browser)
+            found = fit(browser, args.tree)
             browser.close()
         print_fit(found)
         if args.json:
@@ -493,6 +538,7 @@ def main(argv: list[str] | None = None) -> int:
     print(f"interp browser benchmark, {time.strftime('%Y-%m-%d %H:%M')}, {platform.node()}")
     print(f"{chromium_version()}; viewport {VIEWPORT['width']}x{VIEWPORT['height']}")
     print(f"machine before: {before}")
+    print(f"measuring {tree_line(args.tree)}")
     print(
         "step: key press -> first changed canvas picture (median, p90 of "
         f"{args.steps}); fps: distinct pictures/s during a {args.seconds:g} s mouse drag; "
@@ -500,12 +546,12 @@ def main(argv: list[str] | None = None) -> int:
     )
     print(HEADER)
     rows = []
-    with tempfile.TemporaryDirectory() as tmp, server("lab", Path(tmp)) as base:
+    with tempfile.TemporaryDirectory() as tmp, server("lab", Path(tmp), tree=args.tree) as base:
         with sync_playwright() as playwright:
             browser = chromium(playwright)
             context = browser.new_context(viewport=VIEWPORT)
             context.add_init_script(FRAME_PROBE)
-            for notebook, names in lessons().items():
+            for notebook, names in lessons(args.tree).items():
                 if args.only and not set(names) & set(args.only):
                     continue
                 rows += bench_lesson(context, base, notebook, names, args, only=args.only)
@@ -523,6 +569,7 @@ def main(argv: list[str] | None = None) -> int:
     errors = sorted({e for row in rows for e in row.get("console_errors", [])})
     print()
     print("machine after:  " + after)
+    print(f"kernels imported interp from {KERNEL_INTERP[0] if KERNEL_INTERP else '?'}")
     print(f"console errors: {len(errors)}" + "".join(f"\n  {e[:200]}" for e in errors))
     print(f"total {time.monotonic() - started:.0f} s")
     if args.json:
