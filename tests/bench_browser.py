@@ -141,14 +141,14 @@ def tree_line(tree: Path) -> str:
         )
         commit = out.stdout.strip()[:100] or "not a git checkout"
         dirty = subprocess.run(
-            ["git", "-C", str(tree), "status", "--porcelain", "--untracked-files=no"],
+            ["git", "-C", str(tree), "status", "--porcelain", "--", "interp", "lessons"],
             capture_output=True,
             text=True,
             timeout=20,
         ).stdout.strip()
     except (OSError, subprocess.SubprocessError):
         commit, dirty = "unknown", ""
-    return f"{tree} at {commit}" + (" (with uncommitted changes)" if dirty else "")
+    return f"{tree} at {commit}" + (" (interp/ or lessons/ changed since)" if dirty else "")
 
 
 # ------------------------------------------------------------------------ in-page readings
