@@ -158,3 +158,38 @@ def test_a_frame_before_any_view_is_ready_keeps_the_static_picture():
     canvas.draw()  # sends a frame
     picture = Image.open(io.BytesIO(base64.b64decode(canvas._data_url))).convert("RGBA")
     np.testing.assert_array_equal(np.asarray(picture), np.asarray(canvas.buffer_rgba()))
+
+
+def test_a_fast_endpoint_drag_is_drawn_once_with_the_newest_position():
+    """The browser sends a mouse move every 33 ms; each drawn in turn left seconds of stale
+    frames after release (make bench-browser: 12-24 s for lessons 1-2). Moves that arrive
+    while a frame is pending are absorbed, as slider changes are."""
+    from matplotlib.backend_bases import MouseEvent
+
+    app = apps.projecting_a_line()
+    app.figure.canvas.draw()
+    ax = app.plot.view.ax
+    drawn = []
+    refresh = app.refresh
+
+    def counted_refresh():
+        drawn.append(app.controls["A_w"].value)
+        refresh()
+
+    app.refresh = app.coalescer._draw = counted_refresh
+
+    def mouse(name, w, x):
+        px, py = ax.transData.transform((w, x))
+        app.figure.canvas.callbacks.process(name, MouseEvent(name, app.figure.canvas, px, py, 1))
+
+    async def drag():
+        start = app.plot.view.points["A"]
+        mouse("button_press_event", -start[1], start[0])
+        for k in range(1, 21):  # twenty moves that queued up while a frame was drawn
+            mouse("motion_notify_event", 2.0 + 0.2 * k, start[0])
+        mouse("button_release_event", 6.0, start[0])
+        await asyncio.sleep(0.05)
+
+    asyncio.run(drag())
+    assert drawn == [pytest.approx(6.0, abs=0.05)]
+    assert app.plot.view.points["A"][1] == pytest.approx(-app.controls["A_w"].value)
