@@ -193,3 +193,19 @@ def test_a_fast_endpoint_drag_is_drawn_once_with_the_newest_position():
     asyncio.run(drag())
     assert drawn == [pytest.approx(6.0, abs=0.05)]
     assert app.plot.view.points["A"][1] == pytest.approx(-app.controls["A_w"].value)
+
+
+def test_a_step_asks_for_no_full_redraw(monkeypatch):
+    """Under ``%matplotlib widget`` pyplot is interactive, and its auto-draw turned every
+    changed artist into ``draw_idle`` (219 for one step of lesson 3's app): ipympl forwards
+    each to the browser, which asks back for a full redraw after the blitted frame."""
+    app = apps.st_mapping()
+    requests = []
+    monkeypatch.setattr(app.figure.canvas, "draw_idle", lambda *a, **k: requests.append(1))
+    interactive = plt.isinteractive()
+    plt.ion()
+    try:
+        app.set(w2=5.0)
+    finally:
+        plt.interactive(interactive)
+    assert requests == []

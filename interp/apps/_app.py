@@ -113,6 +113,11 @@ class App:
             self.figure.get_layout_engine().execute(self.figure)
             self.figure.set_layout_engine("none")
         take_turns(self.figure.canvas)
+        # The app redraws its figure itself on every change. pyplot's auto-draw (on under
+        # %matplotlib widget) turned each changed artist into a draw_idle, which ipympl sends
+        # to the browser, which asks back for a full redraw: one more whole frame after every
+        # blitted one.
+        self.figure.stale_callback = None
         for widget in self.controls.values():
             if presenting:  # three controls to a row on a 1280 px projector
                 widget.layout.width = "380px"
