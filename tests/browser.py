@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import base64
 import contextlib
+import http.client
 import io
 import json
 import os
@@ -46,7 +47,7 @@ def _wait_for(url: str, process: subprocess.Popen, log: Path, seconds: float = 9
     while time.monotonic() < deadline:
         if process.poll() is not None:
             raise RuntimeError(f"server exited:\n{log.read_text()[-3000:]}")
-        with contextlib.suppress(OSError):
+        with contextlib.suppress(OSError, http.client.HTTPException):
             with urllib.request.urlopen(url, timeout=2) as response:
                 if response.status == 200:
                     return
@@ -96,49 +97,79 @@ def server(
     documents = workdir / "settings" / "@jupyterlab" / "docmanager-extension"
     documents.mkdir(parents=True)
     (documents / "plugin.jupyterlab-settings").write_text(json.dumps({"autosave": False}))
-    port = free_port()
     root = ["--allow-root"] if hasattr(os, "geteuid") and os.geteuid() == 0 else []
-    if kind == "lab":
-        command = [
-            sys.executable,
-            "-m",
-            "jupyter",
-            "lab",
-            "--no-browser",
-            f"--port={port}",
-            "--ServerApp.ip=127.0.0.1",
-            "--IdentityProvider.token=",
-            "--ServerApp.password=",
-            f"--ServerApp.root_dir={lessons}",
-            "--LabApp.expose_app_in_browser=True",
-            *root,
-        ]
-        ready = f"http://127.0.0.1:{port}/api/status"
+    for _attempt in range(5):
+        # A free port can be taken (by another server, or a kernel) before the server binds
+        # it; then it must fail rather than move to the next port, or the tests would talk to
+        # whoever holds this one.
+        port = free_port()
+        if kind == "lab":
+            command = [
+                sys.executable,
+                "-m",
+                "jupyter",
+                "lab",
+                "--no-browser",
+                f"--port={port}",
+                "--ServerApp.port_retries=0",
+                "--ServerApp.ip=127.0.0.1",
+                "--IdentityProvider.token=",
+                "--ServerApp.password=",
+                f"--ServerApp.root_dir={lessons}",
+                "--LabApp.expose_app_in_browser=True",
+                *root,
+            ]
+            ready = f"http://127.0.0.1:{port}/api/status"
+        else:
+            command = [
+                sys.executable,
+                "-m",
+                "voila",
+                "--no-browser",
+                f"--port={port}",
+                "--Voila.port_retries=0",
+                "--Voila.ip=127.0.0.1",
+                str(lessons / notebook) if notebook else str(lessons),
+            ]
+            ready = f"http://127.0.0.1:{port}/"
+        log = workdir / f"{kind}.log"
+        with log.open("w") as out:
+            process = subprocess.Popen(
+                command, cwd=workdir, env=env, stdout=out, stderr=subprocess.STDOUT
+            )
+        try:
+            _wait_for(ready, process, log)
+            _wait_for_log(f"127.0.0.1:{port}/", process, log)  # ours answered, not another
+            break
+        except RuntimeError:
+            _stop(process)
     else:
-        command = [
-            sys.executable,
-            "-m",
-            "voila",
-            "--no-browser",
-            f"--port={port}",
-            "--Voila.ip=127.0.0.1",
-            str(lessons / notebook) if notebook else str(lessons),
-        ]
-        ready = f"http://127.0.0.1:{port}/"
-    log = workdir / f"{kind}.log"
-    with log.open("w") as out:
-        process = subprocess.Popen(
-            command, cwd=workdir, env=env, stdout=out, stderr=subprocess.STDOUT
-        )
+        raise RuntimeError(f"no {kind} server started in 5 attempts:\n{log.read_text()[-3000:]}")
     try:
-        _wait_for(ready, process, log)
         yield f"http://127.0.0.1:{port}"
     finally:
-        process.terminate()
-        try:
-            process.wait(timeout=15)
-        except subprocess.TimeoutExpired:
-            process.kill()
+        _stop(process)
+
+
+def _wait_for_log(text: str, process: subprocess.Popen, log: Path, seconds: float = 30) -> None:
+    """Wait until the server's log says ``text`` (where it runs); fail if it exits first."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        if text in log.read_text(errors="replace"):
+            return
+        if process.poll() is not None:
+            raise RuntimeError(f"server exited:\n{log.read_text()[-3000:]}")
+        time.sleep(0.2)
+    raise RuntimeError(f"the server never said it runs at {text}:\n{log.read_text()[-3000:]}")
+
+
+def _stop(process: subprocess.Popen) -> None:
+    process.terminate()
+    try:
+        process.wait(timeout=15)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.wait()
 
 
 def sync_api():
