@@ -199,10 +199,8 @@ class FilteringPanels(Plot):
         for mark in self.marks:
             mark.set_data(column, row)
 
-        lod = views.lod[np.isfinite(views.lod)]
-        span = f"λ from {lod.min():.1f} to {lod.max():.1f}" if lod.size else "nothing drawn"
         self.axes[0].set_title(f"footprints in the texture (x {p['scale']:g})")
-        self.axes[1].set_title(f"λ per pixel ({p['mode']}): {span}")
+        self.axes[1].set_title(f"λ per pixel ({p['mode']})")  # short: the colorbar is next
         self.axes[2].set_title(FILTERS[str(p["filter"])])
 
     @property

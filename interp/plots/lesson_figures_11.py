@@ -6,6 +6,10 @@ filtering. Each is a :class:`~interp.plots.registry.LessonFigure`, for :data:`FI
 - :class:`OutsideViewFigure` (lesson 6): the outside view alone, for handouts.
 - :class:`TextureFiltering` (lesson 6): footprints, λ per pixel, the filtered image.
 - :class:`MipmapPyramid` (lesson 6): the checkerboard's mipmap levels.
+
+Each figure adds its 3D axes before its other axes: a 3D box's tick labels may reach past its
+axes, and drawn first they lie under the neighbouring panels in a full draw as in a blitted one
+(drawn last, a full draw would put them over a neighbour's image, a blit under it).
 """
 
 from __future__ import annotations
@@ -91,7 +95,7 @@ class CheckerboardsOutside(Checkerboards):
 
     def build(self, figure: Figure | SubFigure) -> None:
         grid = figure.add_gridspec(2, 3, width_ratios=[1.5, 1, 1])
-        self.outside = OutsideView(
+        self.outside = OutsideView(  # the 3D axes first: see the module's notes
             figure.add_subplot(grid[:, 0], projection="3d"),
             legend_ax=figure.add_subplot(grid[1, 2]),
         )
@@ -135,11 +139,10 @@ class ClippingOutside(Clipping):
 
     def build(self, figure: Figure | SubFigure) -> None:
         grid = figure.add_gridspec(2, 2, width_ratios=[1, 1.2], height_ratios=[1.1, 1])
+        outside = figure.add_subplot(grid[:, 1], projection="3d")  # first: see the module's notes
         self.view = ClippingView(figure.add_subplot(grid[0, 0]))
         self.outside = OutsideView(
-            figure.add_subplot(grid[:, 1], projection="3d"),
-            legend_ax=figure.add_subplot(grid[1, 0]),
-            show="triangles",
+            outside, legend_ax=figure.add_subplot(grid[1, 0]), show="triangles"
         )
 
     def redraw(self) -> None:

@@ -41,7 +41,7 @@ TOPS = (1.5, 2.5, 3.5, 4.5)
 #: Lowest point of the box (a camera may stand below the ground).
 BOTTOM = -0.6
 #: How much larger than matplotlib's default the box is drawn in its axes.
-ZOOM = 1.3
+ZOOM = 1.15
 #: View depth of the image plane drawn.
 IMAGE_DISTANCE = 1.0
 
