@@ -22,6 +22,8 @@ FILTERS = {
     "box": "box filtered (exact average)",
     "trilinear": "trilinear (GL_LINEAR_MIPMAP_LINEAR)",
 }
+#: Where the image shows nothing: a light blue, distinct from the grey far checks.
+SKY = "#d6e6f2"
 #: The colour range of the λ panel: half a texel per pixel to a 256-texel texture's last level.
 LOD_RANGE = (-2.0, 8.0)
 
@@ -150,7 +152,8 @@ class FilteringPanels(Plot):
         figure = lod_ax.get_figure(root=False)
         self.colorbar = figure.colorbar(self.lod, ax=lod_ax, shrink=0.8)
         self.colorbar.set_label("λ (mip level)")
-        self.image = image_ax.imshow(blank, cmap="gray", vmin=0, vmax=1)
+        sky = plt.get_cmap("gray").with_extremes(bad=SKY)  # nothing drawn: not a grey check
+        self.image = image_ax.imshow(blank, cmap=sky, vmin=0, vmax=1)
         self.marks = []
         for ax in (lod_ax, image_ax):
             bare(ax)
@@ -186,7 +189,8 @@ class FilteringPanels(Plot):
         extent = (-0.5, width - 0.5, height - 0.5, -0.5)
         self.texture.set_data(mipmap.checker_texture(views.frequency, views.size))
         self.lod.set_data(np.ma.masked_invalid(views.lod_image))
-        self.image.set_data(getattr(views, str(p["filter"])))
+        filtered = getattr(views, str(p["filter"]))
+        self.image.set_data(np.ma.masked_array(filtered, mask=~frags.covered))
         for image in (self.lod, self.image):
             image.set_extent(extent)
 
@@ -239,6 +243,7 @@ class MipmapPyramid(Plot):
                     vmax=1,
                     origin="lower",
                     interpolation="nearest",
+                    aspect="equal",
                 )
             )
             bare(ax)
@@ -252,7 +257,11 @@ class MipmapPyramid(Plot):
             image.set_data(levels[k])
             n = levels[k].shape[0]
             per_check = n / frequency
-            check = f"{per_check:g} texels a check" if per_check >= 1 else "checks blurred"
+            check = (
+                f"{per_check:g} texel{'s' * (per_check != 1)} a check"
+                if per_check >= 1
+                else "checks averaged away"
+            )
             ax.set_title(f"level {k}: {n}²\n{check}", fontsize="small")
 
     @property

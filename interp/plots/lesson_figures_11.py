@@ -14,8 +14,10 @@ axes, and drawn first they lie under the neighbouring panels in a full draw as i
 
 from __future__ import annotations
 
+import numpy as np
 from matplotlib.figure import Figure, SubFigure
 
+from interp import mipmap
 from interp.plots.checker import CheckerPanels
 from interp.plots.filtering import FILTERS, FilteringPanels, MipmapPyramid
 from interp.plots.gpu import ClippingView
@@ -218,7 +220,7 @@ class TextureFiltering(LessonFigure):
     title = "Texture filtering: footprints, mip levels, trilinear"
     description = "pixel footprints in the texture, OpenGL's level of detail, the filtered image"
     caption = (
-        "Left: the footprints of 30 pixels in the 256 x 256-texel checkerboard texture "
+        "Left: the footprints of a grid of pixels in a 256 x 256-texel texture of 64 x 64 checks "
         "(parallelograms, drawn 8 times their size): small and square near the camera, long "
         "and thin far away. Middle: OpenGL's level of detail λ = log2 of the longer footprint "
         "edge in texels, per pixel, one colour per mipmap level. Right: the image with "
@@ -228,7 +230,7 @@ class TextureFiltering(LessonFigure):
     print_size = (WIDE, 2.3)
     PARAMS = table(
         **camera_params(**FILTERING_CAMERA),
-        frequency=Param("16", options=FREQUENCIES, label="checks per side"),
+        frequency=Param("64", options=FREQUENCIES, label="checks per side"),
         filter=Param("trilinear", options=tuple(FILTERS), label="right panel"),
         mode=Param("perspective", options=("perspective", "affine"), label="interpolation"),
         quads=Param(1, 1, 16, 1, "quads per side"),
@@ -254,11 +256,14 @@ class TextureFiltering(LessonFigure):
         drawn = views.lod[views.lod > -float("inf")]
         if not drawn.size:
             return "Nothing is drawn: the quad is out of view."
+        low, high = float(drawn.min()), float(drawn.max())
         magnified = float((drawn <= 0).mean())
+        last = len(mipmap.mipmap(np.zeros((views.size, views.size)))) - 1
+        deepest = 0 if high <= 0 else min(int(np.floor(high)) + 1, last)
         return (
-            f"λ runs from {drawn.min():.2f} to {drawn.max():.2f}: {magnified:.0%} of the drawn "
-            f"pixels are magnified (λ <= 0, level 0), the rest minified, down to mipmap level "
-            f"{min(int(drawn.max()) + 1, 8)}."
+            f"λ runs from {low:.2f} to {high:.2f}: {magnified:.0%} of the drawn pixels are "
+            f"magnified (λ <= 0: level 0 alone); trilinear filtering reaches down to mipmap "
+            f"level {deepest}."
         )
 
 
