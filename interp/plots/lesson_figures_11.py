@@ -96,7 +96,7 @@ class CheckerboardsOutside(Checkerboards):
     )
 
     def build(self, figure: Figure | SubFigure) -> None:
-        grid = figure.add_gridspec(2, 3, width_ratios=[1.5, 1, 1])
+        grid = figure.add_gridspec(2, 3, width_ratios=[1.6, 1, 1])
         self.outside = OutsideView(  # the 3D axes first: see the module's notes
             figure.add_subplot(grid[:, 0], projection="3d"),
             legend_ax=figure.add_subplot(grid[1, 2]),
@@ -108,6 +108,8 @@ class CheckerboardsOutside(Checkerboards):
 
     def redraw(self) -> None:
         super().redraw()
+        for ax in self.panels.axes:  # the panels are narrower than in Checkerboards
+            ax.title.set_fontsize("small")
         p = self.params
         width, height = RESOLUTIONS[str(p["resolution"])]
         self.outside.update(
@@ -149,6 +151,7 @@ class ClippingOutside(Clipping):
 
     def redraw(self) -> None:
         super().redraw()
+        self.view.ax.title.set_fontsize("small")  # the panel is narrower than in Clipping
         p = self.params
         image = self.view.params
         self.outside.update(

@@ -41,7 +41,7 @@ TOPS = (1.5, 2.5, 3.5, 4.5)
 #: Lowest point of the box (a camera may stand below the ground).
 BOTTOM = -0.6
 #: How much larger than matplotlib's default the box is drawn in its axes.
-ZOOM = 1.15
+ZOOM = 1.05
 #: View depth of the image plane drawn.
 IMAGE_DISTANCE = 1.0
 
@@ -145,9 +145,10 @@ class OutsideView(Plot):
         # (zorder 1), then everything that changes above the axes' titles (3), which then stay
         # in the saved background.
         ax.computed_zorder = False
-        ax.set_xlabel("x")
-        ax.set_ylabel("y (up)")
-        ax.set_zlabel("z")
+        # Close to the box: the view often sits beside another panel. The vertical axis' label
+        # would land far to the left, over a neighbour: the title says which way is up.
+        ax.set_xlabel("x", labelpad=-4)
+        ax.set_zlabel("z", labelpad=-4)
         ax.tick_params(labelsize="x-small", pad=0)
         for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
             axis.set_major_locator(MaxNLocator(4))
@@ -306,7 +307,7 @@ class OutsideView(Plot):
         if self._shown.get("view") != view:
             elev, azim = VIEWS[view]
             self.ax.view_init(elev=elev, azim=azim, roll=0.0, vertical_axis="y")
-            self.ax.set_title(f"from outside ({view})")
+            self.ax.set_title(f"from outside ({view}; y up)")
             self._shown["view"] = view
 
     def _set_box(self, eye: np.ndarray) -> None:
