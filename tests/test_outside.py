@@ -271,3 +271,18 @@ def test_the_outside_figures_tell_the_camera_sliders_apart_from_their_own():
     assert not np.array_equal(app.plot.panels.correct.get_array(), image)
     assert app.plot.outside.eye.get_data_3d()[1][0] == pytest.approx(1.5)
     assert eye[1][0] == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("name", FIGURES_11)
+def test_handouts_draw_at_print_size_byte_for_byte_the_same(name):
+    import io
+
+    from interp import figures, plots
+
+    def svg() -> bytes:
+        figure = figures.render(FIGURES_11[name], {})
+        with io.BytesIO() as out, plots.styled():
+            figure.savefig(out, format="svg", metadata=figures._metadata("svg"))
+            return out.getvalue()
+
+    assert svg() == svg()
