@@ -40,6 +40,7 @@ quad        : 2 x 2 pixels that a GPU shades together; its derivatives are diffe
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -471,25 +472,49 @@ class FilteringViews:
         ``[[du/dx, dv/dx], [du/dy, dv/dy]]`` per fragment, exact, in ``mode``.
     lod : (P,) float array
         OpenGL's λ per fragment, from ``derivatives``.
-    nearest, box, trilinear : (H, W) float arrays
-        The image point-sampled at the pixel centres (``GL_NEAREST``); averaged over the box
-        that holds each footprint, exactly (:func:`interp.texture.checker`); and trilinear from
-        the mipmap (``GL_LINEAR_MIPMAP_LINEAR``). ``background`` where nothing is drawn.
+    levels : list of arrays
+        The checkerboard's mipmap (:func:`mipmap`).
     size, frequency : int
         Texels per side of level 0, and checks per side.
     mode : str
+    background : float
+        Image value where nothing is drawn.
+
+    Notes
+    -----
+    The three images, :attr:`nearest`, :attr:`box` and :attr:`trilinear`, are computed when
+    first asked for: a figure that shows one pays for one.
     """
 
     fragments: Fragments
     uv: np.ndarray
     derivatives: np.ndarray
     lod: np.ndarray
-    nearest: np.ndarray
-    box: np.ndarray
-    trilinear: np.ndarray
+    levels: list[np.ndarray]
     size: int
     frequency: int
     mode: str
+    background: float = 0.5
+
+    @cached_property
+    def nearest(self) -> np.ndarray:
+        """(H, W) float array: the texture point-sampled at each pixel centre (``GL_NEAREST``)."""
+        return self.fragments.image(sample_nearest(self.levels[0], *self.uv), self.background)
+
+    @cached_property
+    def box(self) -> np.ndarray:
+        """(H, W) float array: the exact average of the checkerboard over the box that holds
+        each pixel's footprint (:func:`interp.texture.checker`)."""
+        u, v = self.uv * self.frequency  # in checks
+        widths = (np.abs(self.derivatives[0]) + np.abs(self.derivatives[1])) * self.frequency
+        return self.fragments.image(checker(u, v, *widths), self.background)
+
+    @cached_property
+    def trilinear(self) -> np.ndarray:
+        """(H, W) float array: trilinear filtering from the mipmap at OpenGL's λ
+        (``GL_LINEAR_MIPMAP_LINEAR``)."""
+        filtered = sample_trilinear(self.levels, *self.uv, self.lod)
+        return self.fragments.image(filtered, self.background)
 
     @property
     def lod_image(self) -> np.ndarray:
@@ -558,18 +583,14 @@ def filtering_views(
     derivatives = uv_derivatives(frags, mode, uv)
     (dudx, dvdx), (dudy, dvdy) = derivatives
     lod = level_of_detail(dudx, dvdx, dudy, dvdy, size)
-    u, v = uv
-    levels = mipmap(checker_texture(frequency, size))
-    widths = (np.abs(derivatives[0]) + np.abs(derivatives[1])) * frequency  # in checks
     return FilteringViews(
         fragments=frags,
         uv=uv,
         derivatives=derivatives,
         lod=lod,
-        nearest=frags.image(sample_nearest(levels[0], u, v), background),
-        box=frags.image(checker(u * frequency, v * frequency, *widths), background),
-        trilinear=frags.image(sample_trilinear(levels, u, v, lod), background),
+        levels=mipmap(checker_texture(frequency, size)),
         size=size,
         frequency=frequency,
         mode=mode,
+        background=background,
     )

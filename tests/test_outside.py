@@ -211,7 +211,13 @@ STEPS = {
     "checkerboards-outside": [("pitch", 3.0), ("height", 0.2), ("ground", "triangles")],
     "clipping-outside": [("pitch", 3.0), ("height", -0.1), ("quads", 3)],
     "outside-view": [("yaw", 15.0), ("ground", "triangles"), ("frequency", 3)],
-    "texture-filtering": [("pitch", 2.0), ("filter", "box"), ("mode", "affine")],
+    "texture-filtering": [
+        ("pitch", 2.0),
+        ("filter", "box"),
+        ("mode", "affine"),
+        ("frequency", "8"),
+        ("scale", 4.0),
+    ],
     "mipmap-pyramid": [("frequency", "8")],
 }
 

@@ -9,6 +9,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import PolyCollection
+from matplotlib.patches import Patch
 
 from interp import mipmap
 from interp.camera import Camera
@@ -139,6 +140,23 @@ class FilteringPanels(Plot):
         ticks = [0, 64, 128, 192, 256]
         texture_ax.set_xticks(ticks)
         texture_ax.set_yticks(ticks)
+        texture_ax.set_title("footprints in the texture")
+        # What the texture panel shows, as a legend: it changes only with the frequency and the
+        # scale, and a live canvas notices a legend change and redraws all (the texture image
+        # itself stays in the saved background). Beneath the footprints, drawn over it.
+        self.legend = texture_ax.legend(
+            handles=[
+                Patch(facecolor="0.2", edgecolor="0.2", label="checks"),
+                Patch(facecolor=(*_rgb(CORRECT["color"]), 0.35), edgecolor=CORRECT["color"],
+                      label="pixel footprints"),
+            ],
+            loc="upper right",
+            fontsize="x-small",
+            frameon=True,
+            framealpha=0.9,
+        )  # fmt: skip
+        self.legend.set_zorder(0.5)
+        self._texture_key: tuple | None = None
 
         blank = np.zeros((height, width))
         levels = int(LOD_RANGE[1] - LOD_RANGE[0])  # one colour per whole level: bands show
@@ -152,6 +170,7 @@ class FilteringPanels(Plot):
         figure = lod_ax.get_figure(root=False)
         self.colorbar = figure.colorbar(self.lod, ax=lod_ax, shrink=0.8)
         self.colorbar.set_label("λ (mip level)")
+        lod_ax.set_title("λ per pixel")
         sky = plt.get_cmap("gray").with_extremes(bad=SKY)  # nothing drawn: not a grey check
         self.image = image_ax.imshow(blank, cmap=sky, vmin=0, vmax=1)
         self.marks = []
@@ -187,7 +206,12 @@ class FilteringPanels(Plot):
         )
         frags = views.fragments
         extent = (-0.5, width - 0.5, height - 0.5, -0.5)
-        self.texture.set_data(mipmap.checker_texture(views.frequency, views.size))
+        if self._texture_key != (views.frequency, p["scale"]):
+            self.texture.set_data(mipmap.checker_texture(views.frequency, views.size))
+            checks, footprints = self.legend.get_texts()
+            checks.set_text(f"{views.frequency} x {views.frequency} checks")
+            footprints.set_text(f"pixel footprints, {p['scale']:g}x")
+            self._texture_key = (views.frequency, p["scale"])
         self.lod.set_data(np.ma.masked_invalid(views.lod_image))
         filtered = getattr(views, str(p["filter"]))
         self.image.set_data(np.ma.masked_array(filtered, mask=~frags.covered))
@@ -203,20 +227,11 @@ class FilteringPanels(Plot):
         for mark in self.marks:
             mark.set_data(column, row)
 
-        self.axes[0].set_title(f"footprints in the texture (x {p['scale']:g})")
-        self.axes[1].set_title(f"λ per pixel ({p['mode']})")  # short: the colorbar is next
         self.axes[2].set_title(FILTERS[str(p["filter"])])
 
     @property
     def dynamic(self) -> list:
-        return [
-            self.texture,
-            self.footprints,
-            self.lod,
-            self.image,
-            *self.marks,
-            *(ax.title for ax in self.axes),
-        ]
+        return [self.footprints, self.lod, self.image, *self.marks, self.axes[2].title]
 
 
 class MipmapPyramid(Plot):
