@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-import matplotlib.pyplot as plt
+import matplotlib
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import PolyCollection
@@ -97,8 +97,8 @@ class FilteringPanels(Plot):
 
     Examples
     --------
-    >>> import matplotlib.pyplot as plt
-    >>> panels = FilteringPanels(plt.subplots(1, 3)[1], width=64, height=48)
+    >>> from matplotlib.figure import Figure
+    >>> panels = FilteringPanels(Figure().subplots(1, 3), width=64, height=48)
     >>> bool(panels.views.lod.min() > 0)    # 64 pixels wide: each covers several texels
     True
     """
@@ -162,7 +162,7 @@ class FilteringPanels(Plot):
         levels = int(LOD_RANGE[1] - LOD_RANGE[0])  # one colour per whole level: bands show
         self.lod = lod_ax.imshow(
             blank,
-            cmap=plt.get_cmap("viridis", levels),
+            cmap=matplotlib.colormaps["viridis"].resampled(levels),
             vmin=LOD_RANGE[0],
             vmax=LOD_RANGE[1],
             interpolation="nearest",
@@ -171,7 +171,7 @@ class FilteringPanels(Plot):
         self.colorbar = figure.colorbar(self.lod, ax=lod_ax, shrink=0.8)
         self.colorbar.set_label("λ (mip level)")
         lod_ax.set_title("λ per pixel")
-        sky = plt.get_cmap("gray").with_extremes(bad=SKY)  # nothing drawn: not a grey check
+        sky = matplotlib.colormaps["gray"].with_extremes(bad=SKY)  # nothing drawn: not a grey check
         self.image = image_ax.imshow(blank, cmap=sky, vmin=0, vmax=1)
         self.marks = []
         for ax in (lod_ax, image_ax):
@@ -239,8 +239,8 @@ class MipmapPyramid(Plot):
 
     Examples
     --------
-    >>> import matplotlib.pyplot as plt
-    >>> pyramid = MipmapPyramid(plt.subplots(1, 6)[1], frequency=8)
+    >>> from matplotlib.figure import Figure
+    >>> pyramid = MipmapPyramid(Figure().subplots(1, 6), frequency=8)
     >>> [image.get_array().shape[0] for image in pyramid.images]
     [256, 128, 64, 32, 16, 8]
     """

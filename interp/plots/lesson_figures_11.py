@@ -51,9 +51,9 @@ def outside_readout(view: OutsideView) -> str:
 
     Examples
     --------
-    >>> import matplotlib.pyplot as plt
+    >>> from matplotlib.figure import Figure
     >>> from interp.camera import Camera
-    >>> ax = plt.figure().add_subplot(projection="3d")
+    >>> ax = Figure().add_subplot(projection="3d")
     >>> print(outside_readout(OutsideView(ax, Camera(height=1.0, pitch=90.0, distance=0.0))))
     The eye is 1.00 above the ground, 0.00 from the centre of the quad; 9 of 9 pixel rays meet \
 the quad. Clipping keeps 2 of 2 triangles as 5 pieces, with 7 new vertices; the near plane cuts \

@@ -117,8 +117,8 @@ class OutsideView(Plot):
 
     Examples
     --------
-    >>> import matplotlib.pyplot as plt
-    >>> ax = plt.figure().add_subplot(projection="3d")
+    >>> from matplotlib.figure import Figure
+    >>> ax = Figure().add_subplot(projection="3d")
     >>> view = OutsideView(ax, Camera(height=0.3, pitch=15, distance=1.0), quads=2,
     ...                    show="triangles")
     >>> view.counts["pieces"] > view.counts["visible triangles"], view.counts["cut off"] > 0
