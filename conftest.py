@@ -6,6 +6,7 @@ import os
 from pathlib import Path
 
 import matplotlib
+import pytest
 
 matplotlib.use("Agg")  # no screen: every figure in the tests and doctests is drawn with Agg
 
@@ -25,3 +26,12 @@ def pytest_ignore_collect(collection_path: Path, config) -> bool | None:
     except (ImportError, RuntimeError):
         return True
     return None
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    """Every test and doctest closes the pyplot figures it opened (apps open one each)."""
+    yield
+    import matplotlib.pyplot as plt
+
+    plt.close("all")

@@ -98,9 +98,10 @@ def perspective_weights(b: object, w: object) -> np.ndarray:
     ----------
     b : (3,) or (3, ...) array_like
         Screen-space barycentric coordinates of one or more pixels, vertex first; each set
-        sums to 1 inside the triangle.
+        sums to 1 inside the triangle. Values in [-1e12, 1e12].
     w : (3,) or (3, ...) array_like
-        The three vertices' clip-space w (view depths), > 0; broadcasts against ``b``.
+        The three vertices' clip-space w (view depths), in [1e-12, 1e12]; broadcasts against
+        ``b``.
 
     Returns
     -------
@@ -115,19 +116,15 @@ def perspective_weights(b: object, w: object) -> np.ndarray:
     >>> perspective_weights([0.5, 0.5, 0.0], [1.0, 3.0, 2.0])
     array([0.75, 0.25, 0.  ])
     """
-    b = _checks.float_array(b, "b")
-    w = _checks.float_array(w, "w")
+    b = _checks.number_array(b, "b")
+    w = _checks.depth_array(w, "w")
     if b.ndim == 0 or b.shape[0] != 3:
         raise ValueError(f"b must have shape (3,) or (3, ...), one row per vertex, got {b.shape}")
     if w.ndim == 0 or w.shape[0] != 3:
         raise ValueError(f"w must have shape (3,) or (3, ...): one w per vertex, got {w.shape}")
-    if np.any(w <= 0):
-        raise ValueError("w must be > 0 (every vertex in front of the camera)")
-    try:
-        b, w = np.broadcast_arrays(b, w)
-    except ValueError:
-        raise ValueError(f"b and w must broadcast together, got {b.shape} and {w.shape}") from None
-    if np.any((b / w).sum(axis=0) == 0):
+    b, w = _checks.broadcast(b=b, w=w)
+    q = b / w
+    if np.any(np.abs(q.sum(axis=0)) <= 1e-12 * np.abs(q).sum(axis=0)):
         raise ValueError("b must not make b0/w0 + b1/w1 + b2/w2 zero (nothing to divide by)")
     return _perspective_weights(b, w)
 

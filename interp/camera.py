@@ -20,6 +20,9 @@ import numpy as np
 
 from interp import _checks
 
+#: The narrowest field of view, in degrees (a telescope's is about 0.01).
+MIN_FOVY = 1e-6
+
 
 def perspective(fovy_degrees: float, aspect: float, near: float, far: float) -> np.ndarray:
     """The perspective projection matrix of ``gluPerspective``.
@@ -27,11 +30,11 @@ def perspective(fovy_degrees: float, aspect: float, near: float, far: float) -> 
     Parameters
     ----------
     fovy_degrees : float
-        Vertical field of view in degrees, in (0, 180).
+        Vertical field of view in degrees, in [1e-6, 180).
     aspect : float
-        Width / height, > 0.
+        Width / height, in [1e-12, 1e12].
     near, far : float
-        Distances to the near and far planes, ``0 < near < far``.
+        Distances to the near and far planes, ``1e-12 <= near < far <= 1e12``.
 
     Returns
     -------
@@ -49,12 +52,9 @@ def perspective(fovy_degrees: float, aspect: float, near: float, far: float) -> 
     >>> float(clip[2] / clip[3])
     1.0
     """
-    fovy = _checks.real_in(fovy_degrees, "fovy_degrees", 0, 180, low_open=True, high_open=True)
-    aspect = _checks.real_in(aspect, "aspect", 0, None, low_open=True)
-    near = _checks.real_in(near, "near", 0, None, low_open=True)
-    far = _checks.real(far, "far")
-    if far <= near:
-        raise ValueError(f"far must be greater than near ({near:g}), got {far:g}")
+    fovy = _fovy(fovy_degrees, "fovy_degrees")
+    aspect = _checks.scale(aspect, "aspect")
+    near, far = _planes(near, far)
     f = 1.0 / np.tan(np.radians(fovy) / 2)
     return np.array(
         [
@@ -66,15 +66,28 @@ def perspective(fovy_degrees: float, aspect: float, near: float, far: float) -> 
     )
 
 
+def _fovy(value: object, name: str) -> float:
+    return _checks.real_in(value, name, MIN_FOVY, 180, high_open=True)
+
+
+def _planes(near: object, far: object) -> tuple[float, float]:
+    near = _checks.scale(near, "near")
+    far = _checks.scale(far, "far")
+    if far <= near:
+        raise ValueError(f"far must be greater than near ({near:g}), got {far:g}")
+    return near, far
+
+
 def look_at(eye: object, target: object, up: object) -> np.ndarray:
     """The view matrix of ``gluLookAt``: world space to view space.
 
     Parameters
     ----------
     eye, target : (3,) array_like
-        Where the camera is and a point it looks at; they must differ.
+        Where the camera is and a point it looks at; they must differ. Coordinates in
+        [-1e12, 1e12].
     up : (3,) array_like
-        Which way is up; must not be parallel to ``target - eye``.
+        Which way is up; must not be zero or parallel to ``target - eye``.
 
     Returns
     -------
@@ -87,17 +100,15 @@ def look_at(eye: object, target: object, up: object) -> np.ndarray:
     >>> V @ [0, 0, 0, 1]             # the target is 5 units in front: z = -5
     array([ 0.,  0., -5.,  1.])
     """
-    eye = _checks.float_array(eye, "eye", (3,))
-    target = _checks.float_array(target, "target", (3,))
-    up = _checks.float_array(up, "up", (3,))
+    eye, target, up = (
+        _point(p, name) for p, name in ((eye, "eye"), (target, "target"), (up, "up"))
+    )
     forward = target - eye
-    length = np.linalg.norm(forward)
-    if length == 0:
+    if not forward.any():
         raise ValueError("eye and target must differ")
-    forward = forward / length
-    up_length = np.linalg.norm(up)
-    side = np.cross(forward, up)
-    if up_length == 0 or np.linalg.norm(side) <= 1e-12 * up_length:
+    forward = _unit(forward)
+    side = np.cross(forward, _unit(up) if up.any() else up)
+    if np.linalg.norm(side) <= 1e-12:
         raise ValueError("up must not be zero or parallel to the view direction target - eye")
     side = side / np.linalg.norm(side)
     true_up = np.cross(side, forward)
@@ -105,6 +116,17 @@ def look_at(eye: object, target: object, up: object) -> np.ndarray:
     view[0, :3], view[1, :3], view[2, :3] = side, true_up, -forward
     view[:3, 3] = -view[:3, :3] @ eye
     return view
+
+
+def _point(value: object, name: str) -> np.ndarray:
+    point = _checks.float_array(value, name, (3,))
+    return _checks.in_range(point, name, -_checks.MAX_MAGNITUDE, _checks.MAX_MAGNITUDE)
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    """``v / |v|``, scaled first so that a tiny v (1e-300) does not underflow on the way."""
+    v = v / np.abs(v).max()
+    return v / np.linalg.norm(v)
 
 
 @dataclass(frozen=True)
@@ -121,21 +143,21 @@ class Camera:
     ----------
     height : float
         Height of the eye above the ground (may be 0 or negative: the camera is then in or
-        below the plane).
+        below the plane), in [-1e12, 1e12].
     pitch : float
         Degrees below the horizon, in [-89, 90].
     yaw : float
-        Degrees of rotation about the vertical axis, any finite value.
+        Degrees of rotation about the vertical axis, in [-1e12, 1e12].
     distance : float
-        Horizontal distance from the origin, >= 0.
+        Horizontal distance from the origin, in [0, 1e12].
     fovy : float
-        Vertical field of view in degrees, in (0, 180).
+        Vertical field of view in degrees, in [1e-6, 180).
     near, far : float
-        Clipping distances, ``0 < near < far``.
+        Clipping distances, ``1e-12 <= near < far <= 1e12``.
     aspect : float
-        Width / height of the image, > 0.
+        Width / height of the image, in [1e-12, 1e12].
     roll : float
-        Degrees of rotation about the line of sight, any finite value.
+        Degrees of rotation about the line of sight, in [-1e12, 1e12].
 
     Examples
     --------
@@ -157,12 +179,14 @@ class Camera:
     roll: float = 0.0
 
     def __post_init__(self) -> None:
-        _checks.real(self.height, "height")
+        _checks.number(self.height, "height")
         _checks.real_in(self.pitch, "pitch", -89, 90)
-        _checks.real(self.yaw, "yaw")
-        _checks.real_in(self.distance, "distance", 0, None)
-        _checks.real(self.roll, "roll")
-        perspective(self.fovy, self.aspect, self.near, self.far)  # checks the rest
+        _checks.number(self.yaw, "yaw")
+        _checks.real_in(self.distance, "distance", 0, _checks.MAX_MAGNITUDE)
+        _checks.number(self.roll, "roll")
+        _fovy(self.fovy, "fovy")
+        _checks.scale(self.aspect, "aspect")
+        _planes(self.near, self.far)
 
     @property
     def eye(self) -> np.ndarray:

@@ -1,10 +1,14 @@
 """Check a student's function, and say what is wrong with it, like a teaching assistant would.
 
-Each lesson ends with an exercise: write a small function, then call the checker here on it,
-e.g. ``interp.check.perspective_lerp(my_lerp)``. The checker calls the function with plain Python
-floats (no vectorizing needed) on a fixed list of cases: first one a student can redo by hand,
-then the endpoints and special cases (s = 0, s = 1, w1 = w2, ...), then random ones. It compares
-each answer with the library's own function, and when they differ it says
+Each lesson has exercises: write a small function, then call the checker here on it, e.g.
+``interp.check.perspective_lerp(my_lerp)``; lesson 7's worked example is a table of numbers
+(:func:`worked_example`), and every lesson ends with recap questions (:func:`recap`, one
+``recap_N`` per lesson), each wrong answer told why.
+
+A checker calls the function with plain Python floats (no vectorizing needed) on a fixed list of
+cases: first one a student can redo by hand, then the endpoints and special cases (s = 0, s = 1,
+w1 = w2, ...), then random ones. It compares each answer with the library's own function, and
+when they differ it says
 
 - what the function returned, if that was not a number (None, a string, a generator...);
 - where it failed, if it raised an error (e.g. divided by zero at s = 0);
@@ -44,11 +48,23 @@ __all__ = [
     "clip_barycentrics",
     "gap_peak",
     "ndc_depth",
+    "near_clip",
     "perspective_lerp",
     "project",
+    "recap",
+    "recap_1",
+    "recap_2",
+    "recap_3",
+    "recap_4",
+    "recap_5",
+    "recap_6",
+    "recap_7",
+    "recap_8",
+    "recap_9",
     "s_from_t",
     "t_from_s",
     "where_m_lands",
+    "worked_example",
 ]
 
 #: What the student edition's exercise cells hold until the student writes the function.
@@ -866,4 +882,751 @@ def clip_barycentrics(student: Callable[..., Sequence[float]]) -> Verdict:
             ),
         ],
         convert=_triple,
+    )
+
+
+# --- lesson 7: the worked example -----------------------------------------------------------
+
+#: The rows of lesson 7's table a student fills in, in order, with a hint for each.
+WORKED_ROWS = {
+    "w": "w is the clip-space w, the fourth row of P times the point: the view depth -z.",
+    "ndc x": "NDC x is clip x divided by clip w.",
+    "ndc y": "NDC y is clip y divided by clip w.",
+    "window x": "the viewport maps NDC x from [-1, 1] onto [0, 8]: window x = (x + 1) * 8 / 2.",
+    "window y": "the viewport maps NDC y from [-1, 1] onto [0, 8]: window y = (y + 1) * 8 / 2, "
+    "counted from the bottom, as OpenGL does.",
+    "b": "b are the screen-space barycentrics of the pixel centre (3.5, 2.5): the weights of the "
+    "three window positions (x, y) that give the centre, summing to 1.",
+    "lambda": "lambda_i = (b_i / w_i) / (b_0/w_0 + b_1/w_1 + b_2/w_2).",
+    "u": "u = lambda_0 u_0 + lambda_1 u_1 + lambda_2 u_2.",
+}
+
+
+def _worked_value(value: object, length: int) -> tuple[float, ...]:
+    """A row of the student's table as floats, or :class:`_NotAnAnswerError` saying what it
+    must be."""
+    if length == 1:
+        try:
+            return (_scalar(value),)
+        except _NotAnAnswerError:
+            raise _NotAnAnswerError("one number") from None
+    if isinstance(value, (str, bytes, dict)) or value is None or np.ndim(value) == 0:
+        raise _NotAnAnswerError("three numbers, one per corner")
+    flat = np.ravel(np.asarray(value, dtype=object))
+    if flat.size != length:
+        raise _NotAnAnswerError(f"{length} numbers, one per corner")
+    try:
+        return tuple(_scalar(x) for x in flat)
+    except _NotAnAnswerError:
+        raise _NotAnAnswerError(f"{length} numbers, one per corner") from None
+
+
+def _worked_mistake(row: str, got: tuple[float, ...], table: dict[str, object]) -> str:
+    """What a student whose row ``row`` is ``got`` most likely did, or ""."""
+
+    def near(values: object) -> bool:
+        return _close(np.array(got), np.ravel(np.asarray(values, dtype=float)), 1e-4)
+
+    clip = np.array(table["clip"])
+    b, w, u = np.array(table["b"]), np.array(table["w"]), np.array([0.0, 0.5, 1.0])
+    if row == "w" and near(clip[:, 2]):
+        return "that is clip z; w is the fourth coordinate, -z of the view-space point."
+    if row in ("ndc x", "ndc y") and near(clip[:, 0 if row == "ndc x" else 1]):
+        return "that is still clip space: divide by w (the perspective divide)."
+    if row == "window y" and near(8 - np.array(table["window y"])):
+        return (
+            "you counted from the top, like image rows; OpenGL's window y counts from the bottom."
+        )
+    if row == "lambda" and near(b):
+        return "those are b unchanged (noperspective): weight each b_i by 1/w_i, then normalise."
+    if row == "lambda" and near(b / w):
+        return "those are the b_i / w_i: now divide them by their sum, so that they add up to 1."
+    if row == "lambda" and near(b * w / np.sum(b * w)):
+        return "you weighted each b_i by w_i; it is 1/w_i that is linear on the screen."
+    if row == "u" and near(b @ u):
+        return "that is the affine (noperspective) value, b_0 u_0 + b_1 u_1 + b_2 u_2: use lambda."
+    return ""
+
+
+def worked_example(student: Callable[[], dict]) -> Verdict:
+    """Lesson 7: ``student()`` returns the table of the worked example, a dict with the rows of
+    :data:`WORKED_ROWS` (three numbers per row, one per corner, except ``"u"``), which is
+    compared with :func:`interp.worked.table`, row by row.
+
+    Examples
+    --------
+    >>> from interp import worked
+    >>> right = {k: v for k, v in worked.table().items() if k in WORKED_ROWS}
+    >>> worked_example(lambda: right)
+    ✓ worked_example: every row of the table is right, and u = 0.375 is what ...
+    >>> worked_example(lambda: {**right, "lambda": right["b"]})
+    ✗ row 'lambda' is (0.25, 0.25, 0.5), the answer is (0.5, 0.25, 0.25): those are b ...
+    """
+    from interp import worked
+
+    if not callable(student):
+        return Verdict(False, "pass your function itself, e.g. check.worked_example(my_table)")
+    try:
+        with warnings.catch_warnings(), np.errstate(divide="raise", invalid="raise"):
+            warnings.simplefilter("error")
+            answer = student()
+    except NotImplementedError:
+        return Verdict(False, NOT_WRITTEN, pending=True)
+    except Exception as error:  # the student's code: report it, never raise
+        return Verdict(False, f"your function {_error_words(error)}.")
+    if answer is None:
+        return Verdict(False, "your function returned None: did you forget `return`?")
+    if not isinstance(answer, dict):
+        return Verdict(False, f"return a dict of the table's rows, got {type(answer).__name__}.")
+    table = worked.table()
+    for row, hint in WORKED_ROWS.items():
+        if row not in answer:
+            return Verdict(False, f"your table has no row {row!r}; the rows: {list(WORKED_ROWS)}.")
+        expected = np.ravel(np.asarray(table[row], dtype=float))
+        try:
+            got = _worked_value(answer[row], expected.size)
+        except _NotAnAnswerError as rejected:
+            return Verdict(False, f"row {row!r} must be {rejected}, got {answer[row]!r}.")
+        if not _close(np.array(got), expected, 1e-4):
+            said = _worked_mistake(row, got, table) or hint
+            return Verdict(
+                False,
+                f"row {row!r} is {_show_value(got) if len(got) > 1 else _show(got[0])}, the "
+                f"answer is {_show_value(tuple(expected)) if len(got) > 1 else _show(expected[0])}"
+                f": {said}",
+            )
+    values, _ = worked.drawn()
+    drawn = float(values[worked.IMAGE_ROW, worked.COLUMN, 0])
+    affine = float(worked.drawn("affine")[0][worked.IMAGE_ROW, worked.COLUMN, 0])
+    return Verdict(
+        True,
+        f"worked_example: every row of the table is right, and u = {_show(round(drawn, 9))} is "
+        f"what interp.rasterize draws at that pixel (affine would give {_show(round(affine, 9))}).",
+    )
+
+
+# --- the recap questions at the end of every lesson ------------------------------------------
+
+
+@dataclass(frozen=True)
+class Question:
+    """One conceptual question: its options by letter, the right letters, and why.
+
+    ``answer`` holds every right letter ("bd" when two options are right: the question then
+    says "choose all that apply"). ``why`` says, for each letter, why that option is right or
+    wrong; a student who picks a wrong option, or leaves out a right one, reads it.
+    """
+
+    text: str
+    options: dict[str, str]
+    answer: str
+    why: dict[str, str]
+
+    @property
+    def several(self) -> bool:
+        """Whether more than one option is right ("choose all that apply")."""
+        return len(self.answer) > 1
+
+    def markdown(self, number: int) -> str:
+        """The question as the lesson prints it."""
+        head = f"{number}. {self.text}" + (" *(Choose all that apply.)*" if self.several else "")
+        return "\n".join([head, *(f"   - ({k}) {v}" for k, v in self.options.items())])
+
+
+def _q(text: str, answer: str, **options: tuple[str, str]) -> Question:
+    """A question from ``letter=(option, why)`` pairs."""
+    return Question(
+        text,
+        {k: v[0] for k, v in options.items()},
+        answer,
+        {k: v[1] for k, v in options.items()},
+    )
+
+
+#: The recap questions of each lesson (9 is the cheat sheet's review), numbered from 1.
+QUIZZES: dict[int, list[Question]] = {
+    1: [
+        _q(
+            "A is at depth 2 and B at depth 8. Where on the image does M, the middle of AB, show?",
+            "b",
+            a=("At s = 0.5, the middle of the image.", "only when A and B are equally deep."),
+            b=(
+                "At s = 0.8, nearer b, the image of the far end.",
+                "s = w_B / (w_A + w_B) = 8/10: the near half of AB fills most of the image.",
+            ),
+            c=(
+                "At s = 0.2, nearer a, the image of the near end.",
+                "the near half is drawn larger, so M is pushed towards b, not a.",
+            ),
+        ),
+        _q(
+            "When does M show exactly at the middle of the image?",
+            "a",
+            a=(
+                "When A and B are equally deep.",
+                "then AB is parallel to the image plane and projection only scales it.",
+            ),
+            b=(
+                "When A and B are equally far from the axis (x_A = -x_B).",
+                "x does not matter: only the depths w_A and w_B decide where M shows.",
+            ),
+            c=(
+                "When the image plane is at distance d = 1.",
+                "d scales the whole image and leaves every fraction s as it is.",
+            ),
+        ),
+        _q(
+            "Moving the image plane (changing d) changes where M shows, as a fraction s of the "
+            "image:",
+            "b",
+            a=("Yes: s grows with d.", "every image coordinate is multiplied by d alike."),
+            b=(
+                "No: every image coordinate is scaled by the same factor.",
+                "a fraction of the way from a to b does not change under scaling.",
+            ),
+            c=(
+                "Only when the plane passes A.",
+                "nothing special happens there: the image is still scaled by d.",
+            ),
+        ),
+        _q(
+            "The line through A and B passes through the eye (Lengyel's c = 0). The image of AB "
+            "is:",
+            "b",
+            a=(
+                "A segment, with M at its middle.",
+                "all of AB lies on one ray from the eye: it is seen end-on.",
+            ),
+            b=(
+                "A single point, so s is undefined.",
+                "a and b coincide, and a fraction of the way from a to b means nothing.",
+            ),
+            c=(
+                "Nothing at all.",
+                "the segment is in front of the eye: it is seen, as a point.",
+            ),
+        ),
+    ],
+    2: [
+        _q(
+            "Rays through equally spaced pixels hit the segment AB (A near, B far):",
+            "b",
+            a=("Equally spaced along AB.", "only when A and B are equally deep."),
+            b=(
+                "Crowded towards the near end A.",
+                "the near part of AB covers more of the screen, so more pixels land there.",
+            ),
+            c=(
+                "Crowded towards the far end B.",
+                "the far part covers less screen: fewer pixels, spread further apart on AB.",
+            ),
+        ),
+        _q(
+            "An attribute is 0 at A (near) and 1 at B (far). At the middle of the image its "
+            "right value is:",
+            "b",
+            a=("0.5.", "that is the affine value, right only at equal depths."),
+            b=(
+                "Less than 0.5.",
+                "the middle of the image shows a point nearer A: t(1/2) = w_1 / (w_1 + w_2).",
+            ),
+            c=("More than 0.5.", "that would need A to be the far end."),
+        ),
+        _q(
+            "Interpolating an attribute linearly on the screen uses, in place of the object "
+            "parameter t:",
+            "a",
+            a=("The screen parameter s.", "a = (1-s) a_1 + s a_2 uses s where t belongs."),
+            b=("1/w.", "1/w is interpolated by the right method, not by the affine one."),
+            c=("Nothing: it is right.", "it is right only when w_1 = w_2."),
+        ),
+        _q(
+            "A and B are equally deep. Then:",
+            "a",
+            a=("t = s everywhere.", "the s-t curve is the diagonal."),
+            b=("t = s only at the two ends.", "with equal depths they agree everywhere."),
+            c=("t = 1 - s.", "t and s both run from A (0) to B (1)."),
+        ),
+    ],
+    3: [
+        _q(
+            "The screen parameter s(t) of the point P(t) depends on:",
+            "ab",
+            a=("t.", "of course: s = t w_2 / ((1-t) w_1 + t w_2)."),
+            b=("The depths w_1 and w_2 (in fact only their ratio).", "they weight the mix."),
+            c=(
+                "The screen positions x'_1 and x'_2 of A and B.",
+                "they drop out of the CS5500 derivation: s depends only on t and the depths.",
+            ),
+            d=(
+                "The first row of the projection matrix M.",
+                "only the w row matters: M's other rows move the image, not the fraction s.",
+            ),
+        ),
+        _q(
+            "Where is the gap |t - s| largest?",
+            "b",
+            a=("At s = 1/2, always.", "the gap is not symmetric unless w_1 = w_2."),
+            b=(
+                "At s* = sqrt(w_2) / (sqrt(w_1) + sqrt(w_2)).",
+                "where dt/ds = 1, i.e. s w_1 + (1-s) w_2 = sqrt(w_1 w_2).",
+            ),
+            c=(
+                "At s = w_2 / (w_1 + w_2).",
+                "that is where the middle of AB shows, not where the gap peaks.",
+            ),
+        ),
+        _q(
+            "As w_2 / w_1 grows without bound, the largest gap:",
+            "a",
+            a=(
+                "Tends to 1.",
+                "(r - 1) / (r + 1) with r = sqrt(w_2 / w_1) tends to 1, never reaching it.",
+            ),
+            b=("Tends to 1/2.", "1/2 is its value at w_2 = 9 w_1; it keeps growing."),
+            c=("Grows without bound.", "t and s both lie in [0, 1]: the gap is below 1."),
+        ),
+        _q(
+            "'Interpolate first, then project' works because:",
+            "a",
+            a=(
+                "M is linear, so M P(t) is the same mix of MA and MB as P(t) is of A and B.",
+                "the divide by w comes only after the mixing.",
+            ),
+            b=(
+                "Projection keeps ratios along a line.",
+                "the divide by w does not: that is the whole problem.",
+            ),
+            c=(
+                "The screen is flat.",
+                "the screen being flat is not what makes the mix carry over; linearity of M is.",
+            ),
+        ),
+    ],
+    4: [
+        _q(
+            "Along the image of a segment, which are linear in the screen parameter s?",
+            "bcd",
+            a=("w, the view depth.", "w bends: 1/w is the straight one."),
+            b=("1/w.", "1/w(s) = (1-s)/w_1 + s/w_2."),
+            c=("NDC z.", "NDC z = alpha + beta/w is an affine function of 1/w."),
+            d=("Window z, what the depth buffer stores.", "it is (NDC z + 1)/2, affine again."),
+            e=("The object parameter t.", "t(s) is a curve unless w_1 = w_2."),
+        ),
+        _q(
+            "With a 24-bit fixed-point depth buffer, halving the near plane:",
+            "a",
+            a=(
+                "About doubles the smallest depth step, at every depth.",
+                "steps grow like w^2 / near in fixed point.",
+            ),
+            b=("Halves every depth step.", "the opposite: a smaller near plane costs precision."),
+            c=(
+                "Changes nothing far away.",
+                "far away the step still grows like w^2 / near: it doubles.",
+            ),
+        ),
+        _q(
+            "A float32 depth buffer storing window z, compared with a 24-bit fixed-point one:",
+            "b",
+            a=(
+                "Is finer everywhere.",
+                "in [1/2, 1) float32 numbers are exactly 2^-24 apart, like 24-bit fixed point.",
+            ),
+            b=(
+                "Is the same wherever window z >= 1/2, finer only very near the near plane.",
+                "window z passes 1/2 at w = 2 far near / (far + near), about twice the near plane.",
+            ),
+            c=("Is coarser far away.", "it is the same there: 2^-24 in both."),
+        ),
+        _q(
+            "Reversed Z (storing 1 at the near plane and 0 at the far one, in float32):",
+            "a",
+            a=(
+                "Puts float's fine spacing far away, where 1/w changes least.",
+                "floats are finest near 0, and reversed depth is near 0 far away.",
+            ),
+            b=(
+                "Helps a 24-bit fixed-point buffer just as much.",
+                "fixed-point numbers are evenly spaced: reversing them changes nothing.",
+            ),
+            c=(
+                "Needs no change to the depth test.",
+                "nearer is now larger: the test becomes GL_GREATER, the buffer cleared to 0.",
+            ),
+        ),
+    ],
+    5: [
+        _q(
+            "Along the image of a segment, which are linear in s?",
+            "bc",
+            a=("The attribute a.", "a is linear in t, not in s."),
+            b=("a/w.", "Low's eq. 16: a/w is linear on the screen."),
+            c=("1/w.", "Low's eq. 12."),
+            d=("a times w.", "a w is neither: only quantities divided by w are."),
+        ),
+        _q(
+            "Having interpolated a/w, you get a by dividing by:",
+            "a",
+            a=("The interpolated 1/w.", "both are linear on the screen; their quotient is a."),
+            b=(
+                "Window z, from the depth buffer.",
+                "window z is alpha' + beta'/w, not 1/w: the classic mistake.",
+            ),
+            c=(
+                "Nothing: multiply by a linearly interpolated w instead.",
+                "w is not linear on the screen: that is dividing too early.",
+            ),
+        ),
+        _q(
+            "When does affine (screen-space) interpolation give the right attribute along a "
+            "segment?",
+            "ab",
+            a=("When w_1 = w_2.", "then t = s."),
+            b=("When a_1 = a_2.", "a constant is right whichever way it is interpolated."),
+            c=(
+                "When the segment is short on the screen.",
+                "shorter means smaller errors, not none: the error depends on w_2 / w_1.",
+            ),
+        ),
+        _q(
+            "A segment from A (in front) to B (behind the near plane) is clipped at C. C's "
+            "attribute is:",
+            "a",
+            a=(
+                "a_1 + t_C (a_2 - a_1), with t_C where the segment meets the near plane.",
+                "clipping happens in clip space, where everything is still linear in t.",
+            ),
+            b=("B's attribute.", "C is not B: the whole visible part would come out wrong."),
+            c=("(a_1 + a_2) / 2.", "only if the near plane cuts AB at its middle."),
+        ),
+    ],
+    6: [
+        _q(
+            "Looking straight down at the ground quad, the affine error is:",
+            "a",
+            a=("Zero.", "every corner is at the same depth, so affine is exact."),
+            b=("At its largest.", "it is largest seen low and flat, not from above."),
+            c=("The same as at the default camera.", "the depths no longer differ."),
+        ),
+        _q(
+            "Why do the affine checkerboard's lines bend differently in the quad's two triangles?",
+            "a",
+            a=(
+                "Each triangle is interpolated affinely from its own three corners.",
+                "on the shared diagonal both agree, but the slopes differ on either side: a kink.",
+            ),
+            b=(
+                "The rasterizer skips pixels on the diagonal.",
+                "the fill rule draws each pixel once: no gap, no overlap.",
+            ),
+            c=("The texture has a line there.", "the texture is a plain checkerboard."),
+        ),
+        _q(
+            "Cutting the quad into 8 x 8 smaller quads, all drawn affinely:",
+            "a",
+            a=(
+                "Lowers the largest error a lot.",
+                "each small triangle spans a small range of depths (at the lesson's default "
+                "camera the largest error falls from 3.86 to 0.12 texels).",
+            ),
+            b=("Removes the error completely.", "the error shrinks but stays above 0."),
+            c=("Makes the error worse.", "more, smaller triangles are each nearly exact."),
+        ),
+        _q(
+            "With no roll, Quake-style spans on a level floor are exact because:",
+            "a",
+            a=("Every image row is at one depth.", "and with equal depths affine is exact."),
+            b=("The spans are short.", "even 64-pixel spans are exact without roll."),
+            c=("The floor is far away.", "distance does not matter, equal depth does."),
+        ),
+    ],
+    7: [
+        _q(
+            "Across a triangle, which are planes over the screen (affine in a pixel's x and y)?",
+            "bdef",
+            a=("w.", "its contours are straight but not evenly spaced: not a plane."),
+            b=("1/w.", "the triangle's plane equation makes 1/w affine in NDC x and y."),
+            c=("A texture coordinate u.", "u is affine in space, not on the screen."),
+            d=("u/w.", "the same argument as 1/w, for a quantity affine on the triangle."),
+            e=("NDC z.", "alpha + beta/w, affine in 1/w."),
+            f=("Window z.", "affine in NDC z, so the depth buffer may interpolate it."),
+        ),
+        _q(
+            "Why does the 1D result carry over to triangles?",
+            "a",
+            a=(
+                "The triangle lies in a plane, on which 1/w is affine in NDC (x, y); the "
+                "viewport is affine too.",
+                "so 1/w, and a/w, are planes over the pixels.",
+            ),
+            b=("Triangles are small.", "the result is exact at every size."),
+            c=("The GPU cuts triangles into lines.", "it needs no such thing: planes suffice."),
+        ),
+        _q(
+            "OpenGL's perspective-correct weights are lambda_i =",
+            "a",
+            a=("(b_i / w_i) / (b_0/w_0 + b_1/w_1 + b_2/w_2).", "eq. 14.9."),
+            b=("(b_i w_i) / (b_0 w_0 + b_1 w_1 + b_2 w_2).", "1/w is linear, not w."),
+            c=("b_i.", "that is noperspective."),
+        ),
+        _q(
+            "On the edge from vertex 0 to vertex 1 (b_2 = 0), lambda_1 reduces to:",
+            "a",
+            a=(
+                "t(s) of lesson 3, with s = b_1 and the edge's depths w_0, w_1.",
+                "b_1 w_0 / (b_1 w_0 + b_0 w_1) with b_0 = 1 - s.",
+            ),
+            b=("b_1.", "only if w_0 = w_1."),
+            c=("1/2.", "only at one point, if at all."),
+        ),
+    ],
+    8: [
+        _q(
+            "A vertex shader writes gl_Position = vec4(p.xyz / p.w, 1.0). A smooth output is then:",
+            "a",
+            a=(
+                "Interpolated like noperspective.",
+                "every vertex has w = 1: there is nothing left to correct with.",
+            ),
+            b=("Still perspective-correct.", "the w that made it correct is gone."),
+            c=("Flat.", "it is still interpolated, just not perspective-correctly."),
+        ),
+        _q(
+            "A flat output takes, across a whole triangle, the value of:",
+            "a",
+            a=(
+                "Its provoking vertex: by default the last vertex of the triangle.",
+                "glProvokingVertex can make it the first.",
+            ),
+            b=("The average of its three vertices.", "flat does not interpolate or average."),
+            c=(
+                "The vertex nearest the camera.",
+                "the provoking vertex is fixed by the order, not by depth.",
+            ),
+        ),
+        _q(
+            "Why is a triangle clipped before dividing by w?",
+            "a",
+            a=(
+                "A vertex behind the camera has w <= 0: dividing would mirror it or divide by 0.",
+                "in clip space everything is still linear, so the cut is exact.",
+            ),
+            b=("It is faster.", "that is not the reason: it is about correctness."),
+            c=("The divide needs positive numbers.", "w is not required to be positive: w != 0."),
+        ),
+        _q(
+            "Quake's spans of 16 pixels cost about how many divides per pixel?",
+            "a",
+            a=("About 1/16.", "one exact value every 16 pixels along a row (plus one per row)."),
+            b=("16.", "that is the span length, not the cost."),
+            c=("None.", "each span starts with a divide."),
+        ),
+    ],
+    9: [
+        _q(
+            "Which is the perspective-correct attribute at screen parameter s?",
+            "a",
+            a=(
+                "((1-s) a_1/w_1 + s a_2/w_2) / ((1-s)/w_1 + s/w_2)",
+                "interpolate a/w and 1/w, then divide.",
+            ),
+            b=("(1-s) a_1 + s a_2", "that is affine (noperspective)."),
+            c=(
+                "((1-s) a_1 w_1 + s a_2 w_2) / ((1-s) w_1 + s w_2)",
+                "each end weighted by its w where 1/w belongs.",
+            ),
+        ),
+        _q(
+            "The object parameter seen at screen parameter s is t(s) =",
+            "a",
+            a=("s w_1 / (s w_1 + (1-s) w_2)", "CS5500's result."),
+            b=("s w_2 / (s w_2 + (1-s) w_1)", "that is s(t), the forward map, applied to s."),
+            c=("s", "only when w_1 = w_2."),
+        ),
+        _q(
+            "Which are linear on the screen?",
+            "bcf",
+            a=("w", "1/w is."),
+            b=("1/w", "the heart of the matter."),
+            c=("window z", "affine in 1/w."),
+            d=("u", "u is linear in space, not on the screen."),
+            e=("t", "t(s) is a curve."),
+            f=("u/w", "like 1/w."),
+        ),
+        _q(
+            "Which GLSL qualifier interpolates linearly in screen space?",
+            "a",
+            a=("noperspective", "the screen-space barycentrics b."),
+            b=("smooth", "smooth is perspective-correct, the default."),
+            c=("flat", "flat does not interpolate."),
+        ),
+    ],
+}
+
+
+def _letters(value: object) -> str | None:
+    """The letters a student chose, sorted, or None if ``value`` is not a choice."""
+    if isinstance(value, str):
+        text = value
+    elif isinstance(value, (list, tuple, set, frozenset)) and all(
+        isinstance(v, str) for v in value
+    ):
+        text = "".join(value)
+    else:
+        return None
+    letters = [c for c in text.lower() if c.isalpha()]
+    return "".join(sorted(set(letters)))
+
+
+def recap(lesson: int, student: Callable[[], dict]) -> Verdict:
+    """Check the answers to lesson ``lesson``'s recap questions (:data:`QUIZZES`).
+
+    ``student()`` returns a dict from question number (1, 2, ...) to the letter or letters
+    chosen, e.g. ``{1: "b", 2: "bd"}``. Each wrong answer gets its reason: why a chosen option
+    is wrong, or why a missing one is right.
+
+    Examples
+    --------
+    >>> recap(1, lambda: {1: "b", 2: "a", 3: "b", 4: "b"})
+    ✓ recap 1: all 4 answers right.
+    >>> print(repr(recap(1, lambda: {1: "a", 2: "a", 3: "b", 4: "b"})))
+    ✗ recap 1: 3 of 4 right.
+    <BLANKLINE>
+    - question 1: (a) is not right: only when A and B are equally deep.
+    """
+    questions = QUIZZES[lesson]
+    name = f"recap {lesson}"
+    if not callable(student):
+        return Verdict(False, f"pass your function itself, e.g. check.recap_{lesson}(my_answers)")
+    try:
+        answers = student()
+    except NotImplementedError:
+        return Verdict(False, NOT_WRITTEN, pending=True)
+    except Exception as error:  # the student's code: report it, never raise
+        return Verdict(False, f"your function {_error_words(error)}.")
+    if answers is None:
+        return Verdict(False, "your function returned None: did you forget `return`?")
+    if not isinstance(answers, dict):
+        return Verdict(
+            False,
+            f"return a dict from question number to letters, e.g. {{1: 'a', 2: 'bc'}}; got "
+            f"{type(answers).__name__}.",
+        )
+    notes, right = [], 0
+    for number, question in enumerate(questions, start=1):
+        chosen = _letters(answers.get(number, answers.get(str(number))))
+        if chosen is None or not chosen:
+            notes.append(f'- question {number}: no answer: give its letter as a string, e.g. "b".')
+            continue
+        unknown = [c for c in chosen if c not in question.options]
+        if unknown:
+            notes.append(
+                f"- question {number}: there is no option ({unknown[0]}); the options are "
+                f"{', '.join(question.options)}."
+            )
+            continue
+        if chosen == question.answer:
+            right += 1
+            continue
+        if len(chosen) > 1 and not question.several:
+            notes.append(f"- question {number}: it has one right answer: choose one letter.")
+            continue
+        wrong = [c for c in chosen if c not in question.answer]
+        missing = [c for c in question.answer if c not in chosen]
+        said = [f"({c}) is not right: {question.why[c]}" for c in wrong]
+        if missing and question.several:  # say how many, not which: let the student find them
+            count = (
+                "one right option is" if len(missing) == 1 else f"{len(missing)} right options are"
+            )
+            said.append(f"{'And ' if wrong else ''}{count} missing.")
+        notes.append(f"- question {number}: " + " ".join(said))
+    extra = [k for k in answers if str(k) not in {str(n) for n in range(1, len(questions) + 1)}]
+    if extra:
+        notes.append(f"- there is no question {extra[0]}; the questions are 1 to {len(questions)}.")
+    if right == len(questions) and not extra:
+        return Verdict(True, f"{name}: all {len(questions)} answers right.")
+    return Verdict(False, f"{name}: {right} of {len(questions)} right.\n\n" + "\n".join(notes))
+
+
+def _recap_checker(lesson: int) -> Callable[[Callable[[], dict]], Verdict]:
+    def checker(student: Callable[[], dict]) -> Verdict:
+        return recap(lesson, student)
+
+    checker.__name__ = checker.__qualname__ = f"recap_{lesson}"
+    checker.__doc__ = (
+        f"Lesson {lesson}'s recap questions: ``student()`` returns a dict from question number "
+        "to the letter(s) chosen (see :func:`recap`)."
+    )
+    return checker
+
+
+recap_1, recap_2, recap_3, recap_4, recap_5, recap_6, recap_7, recap_8, recap_9 = (
+    _recap_checker(k) for k in range(1, 10)
+)
+
+
+# --- lesson 8: clipping ----------------------------------------------------------------------
+
+
+def _near_t(z1: float, w1: float, z2: float, w2: float) -> float:
+    """Where the edge from clip-space (z1, w1) to (z2, w2) meets the near plane z = -w."""
+    d1, d2 = z1 + w1, z2 + w2  # >= 0 inside the near plane
+    return d1 / (d1 - d2)
+
+
+def near_clip(student: Callable[[float, float, float, float], float]) -> Verdict:
+    """Lesson 8: ``student(z1, w1, z2, w2)`` is the parameter t at which the edge from a vertex
+    inside the near plane (clip z1, w1, with ``z1 >= -w1``) to one outside it (``z2 < -w2``)
+    crosses the near plane ``z = -w``, found in clip space as :mod:`interp.clipping` does.
+
+    Examples
+    --------
+    >>> near_clip(lambda z1, w1, z2, w2: (z1 + w1) / ((z1 + w1) - (z2 + w2)))
+    ✓ near_clip: right on all 24 cases, among them the inside vertex on the near plane and ...
+    >>> near_clip(lambda z1, w1, z2, w2: (-1 - z1 / w1) / (z2 / w2 - z1 / w1))
+    ✗ that interpolates NDC z = z/w, ...
+    """
+
+    def draw(r: np.random.Generator) -> tuple[float, ...]:
+        # an edge from a point in front of the near plane to one in front of the eye but
+        # before the near plane, both made with interp.perspective's near = n, far = f
+        n, f = r.uniform(0.1, 2), r.uniform(5, 100)
+        w1, w2 = r.uniform(n * 1.2, f), r.uniform(0.05 * n, 0.9 * n)
+
+        def z(w):
+            return (f + n) / (f - n) * w - 2 * f * n / (f - n)
+
+        return z(w1), w1, z(w2), w2
+
+    cases = [
+        Case((0.0, 2.0, -3.0, 1.0)),
+        Case((1.0, 3.0, -1.5, 0.8)),
+        Case((-1.0, 1.0, -4.0, 2.0), "the inside vertex on the near plane"),
+        Case((2.0, 4.0, -1.0, -1.0), "the outside vertex behind the eye"),
+        *_random(9, 20, draw),
+    ]
+    return _judge(
+        "near_clip",
+        student,
+        _near_t,
+        cases,
+        "z1, w1, z2, w2",
+        [
+            (
+                lambda z1, w1, z2, w2: (-1 - z1 / w1) / (z2 / w2 - z1 / w1),
+                "that interpolates NDC z = z/w, which is not linear along the edge in space "
+                "(and has no meaning behind the eye): clip first, in clip space, where the "
+                "distance z + w to the near plane is linear in t.",
+            ),
+            (
+                lambda z1, w1, z2, w2: 1 - _near_t(z1, w1, z2, w2),
+                "that is measured from the outside vertex: t is 0 at the inside vertex (z1, w1).",
+            ),
+            (
+                lambda z1, w1, z2, w2: (z1 - w1) / ((z1 - w1) - (z2 - w2)),
+                "that is where the edge meets the far plane z = w; the near plane is z = -w, "
+                "where z + w = 0.",
+            ),
+        ],
     )

@@ -4,7 +4,7 @@ Teachers print. This writes the lessons' figures, the very ones the live apps sh
 class of :mod:`interp.plots.registry`, drawn here at its print size), as vector PDF and SVG
 (TrueType fonts embedded, text kept as text) and 300 dpi PNG, sized for a column of an A4 or
 Letter page, plus ``handout.pdf``: a cover page listing the figures, then each figure with its
-title and a caption saying what to look at.
+title and a caption saying what to look at, and last the course's cheat sheet.
 
 Running it twice gives byte-identical files: no timestamps, unless ``SOURCE_DATE_EPOCH`` is
 set, in which case that date is used. Every parameter is checked against its documented range
@@ -32,7 +32,7 @@ from pathlib import Path
 import matplotlib
 import numpy as np
 
-from interp import plots
+from interp import cheatsheet, plots
 from interp.plots.registry import FIGURES, NARROW, WIDE, LessonFigure
 
 __all__ = ["FIGURES", "FORMATS", "NARROW", "WIDE", "main", "render", "resolve_params"]
@@ -181,6 +181,7 @@ class Staging:
     def __init__(self, folder: Path) -> None:
         self.folder = folder
         self.staged: list[tuple[str, Path]] = []
+        self.names: set[str] = set()
         mask = os.umask(0)
         os.umask(mask)
         self.mode = 0o666 & ~mask  # what open() would give a new file
@@ -191,7 +192,9 @@ class Staging:
         if target.is_dir():
             raise UsageError(f"cannot write {target}: a folder of that name is in the way")
         with _signals_held():  # no interruption between making the file and noting it
-            handle, temporary = tempfile.mkstemp(dir=self.folder, prefix=f".{name}.", suffix=".tmp")
+            handle, temporary = tempfile.mkstemp(
+                dir=self.folder, prefix=self._prefix(name), suffix=".tmp"
+            )
             os.close(handle)
             self.staged.append((temporary, target))
         try:
@@ -216,8 +219,16 @@ class Staging:
     def __enter__(self) -> Staging:
         return self
 
+    def _prefix(self, name: str) -> str:
+        self.names.add(name)
+        return f".{name}.{os.getpid()}."
+
     def __exit__(self, *exc: object) -> None:
-        for temporary, _ in self.staged:
+        # Also any temporary made just before a signal stopped it being noted: this process's.
+        leftovers = {Path(t) for t, _ in self.staged}
+        for name in self.names:
+            leftovers |= set(self.folder.glob(f".{name}.{os.getpid()}.*.tmp"))
+        for temporary in leftovers:
             with contextlib.suppress(OSError):
                 os.unlink(temporary)
         self.staged.clear()
@@ -244,7 +255,8 @@ def save(figure: matplotlib.figure.Figure, name: str, fmt: str, dpi: int, stage:
 
 
 def write_handout(stage: Staging, chosen: Sequence[str], params: dict[str, dict]) -> Path:
-    """Stage ``handout.pdf``: a cover listing the figures, then one page per figure."""
+    """Stage ``handout.pdf``: a cover listing the figures, one page per figure, and the cheat
+    sheet (:mod:`interp.cheatsheet`)."""
     from matplotlib.backends.backend_pdf import PdfPages
     from matplotlib.figure import Figure
 
@@ -259,6 +271,10 @@ def write_handout(stage: Staging, chosen: Sequence[str], params: dict[str, dict]
                 cover.text(0.13, y, figure_class.title, fontsize=10, weight="bold")
                 lesson = f"lesson {figure_class.lesson}: {figure_class.description}"
                 cover.text(0.13, y - 0.018, lesson, fontsize=8)
+            y = 0.8 - 0.055 * len(chosen)
+            cover.text(0.1, y, f"{len(chosen) + 2:>2}", fontsize=10, ha="right")
+            cover.text(0.13, y, "Cheat sheet", fontsize=10, weight="bold")
+            cover.text(0.13, y - 0.018, "the formulas, the notation, the mistakes", fontsize=8)
             pdf.savefig(cover)
             for figure_class in (FIGURES[n] for n in chosen):
                 width, height = figure_class.print_size
@@ -276,6 +292,9 @@ def write_handout(stage: Staging, chosen: Sequence[str], params: dict[str, dict]
                 bottom.text(0.0, 0.9, caption, fontsize=10, va="top")
                 _settle_layout(page)
                 pdf.savefig(page)
+            sheet = Figure(figsize=A4)
+            cheatsheet.draw(sheet)
+            pdf.savefig(sheet)
 
     return stage.write("handout.pdf", pages)
 

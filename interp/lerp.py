@@ -16,6 +16,9 @@ The result the lessons derive (CS5500 handout; Low, eq. 12 and 16): "interpolate
 project" gives ``s = t w2 / ((1 - t) w1 + t w2)``; equivalently ``1/w`` and ``a/w`` vary
 linearly in s, so the right attribute is ``lerp(a/w) / lerp(1/w)``.
 
+Ranges: parameters (t, s) and attributes lie in [-1e12, 1e12], depths (w1, w2, d) in
+[1e-12, 1e12]; outside, a ValueError names the argument. Within them every result is finite.
+
 One home per formula: each public function checks its arguments, then calls an unchecked kernel
 of the same name with a leading underscore (``s_from_t`` calls ``_s_from_t``). The rest of the
 package (clipping, the plots, the exercise checkers) calls the kernels, so every formula is
@@ -30,16 +33,13 @@ from interp import _checks
 
 
 def _depths(w1: object, w2: object) -> tuple[np.ndarray, np.ndarray]:
-    w1 = _checks.float_array(w1, "w1")
-    w2 = _checks.float_array(w2, "w2")
-    for name, w in (("w1", w1), ("w2", w2)):
-        if np.any(w <= 0):
-            raise ValueError(f"{name} must be > 0 (a point at or behind the camera has w <= 0)")
-    return w1, w2
+    """View depths: in [1e-12, 1e12] (> 0: a point at or behind the camera has w <= 0)."""
+    return _checks.depth_array(w1, "w1"), _checks.depth_array(w2, "w2")
 
 
 def _fraction(x: object, name: str) -> np.ndarray:
-    return _checks.float_array(x, name)
+    """A parameter (t, s) or attribute value: in [-1e12, 1e12]."""
+    return _checks.number_array(x, name)
 
 
 def _result(x: np.ndarray) -> np.ndarray | float:
@@ -77,7 +77,8 @@ def s_from_t(t: object, w1: object, w2: object) -> np.ndarray | float:
         Object-space parameter(s); 0 at A, 1 at B. Values outside [0, 1] extrapolate along the
         line, as long as the point stays in front of the camera.
     w1, w2 : array_like
-        View depths (clip-space w) of A and B, > 0. All three broadcast together.
+        View depths (clip-space w) of A and B, in [1e-12, 1e12]. All three broadcast
+        together.
 
     Returns
     -------
@@ -93,6 +94,7 @@ def s_from_t(t: object, w1: object, w2: object) -> np.ndarray | float:
     """
     t = _fraction(t, "t")
     w1, w2 = _depths(w1, w2)
+    t, w1, w2 = _checks.broadcast(t=t, w1=w1, w2=w2)
     if np.any(_lerp(w1, w2, t) <= 0):  # the depth of P(t)
         raise ValueError("t must keep the point in front of the camera: (1-t) w1 + t w2 > 0")
     return _result(_s_from_t(t, w1, w2))
@@ -108,7 +110,8 @@ def t_from_s(s: object, w1: object, w2: object) -> np.ndarray | float:
     s : array_like
         Screen-space parameter(s); 0 at the image a of A, 1 at the image b of B.
     w1, w2 : array_like
-        View depths (clip-space w) of A and B, > 0. All three broadcast together.
+        View depths (clip-space w) of A and B, in [1e-12, 1e12]. All three broadcast
+        together.
 
     Returns
     -------
@@ -124,6 +127,7 @@ def t_from_s(s: object, w1: object, w2: object) -> np.ndarray | float:
     """
     s = _fraction(s, "s")
     w1, w2 = _depths(w1, w2)
+    s, w1, w2 = _checks.broadcast(s=s, w1=w1, w2=w2)
     if np.any(_lerp(w2, w1, s) <= 0):
         raise ValueError("s must be where the line is visible: s w1 + (1-s) w2 > 0")
     return _result(_t_from_s(s, w1, w2))
@@ -135,9 +139,9 @@ def project_to_image_plane(points: object, d: float = 1.0) -> np.ndarray | float
     Parameters
     ----------
     points : (2,) or (N, 2) array_like
-        Points ``(x, z)`` in view space, in front of the camera (z < 0).
+        Points ``(x, z)`` in view space, in front of the camera: ``z <= -1e-12``.
     d : float
-        Distance from the eye to the image plane, > 0.
+        Distance from the eye to the image plane, in [1e-12, 1e12].
 
     Returns
     -------
@@ -151,13 +155,16 @@ def project_to_image_plane(points: object, d: float = 1.0) -> np.ndarray | float
     >>> project_to_image_plane([[1, -1], [1, -2]], d=2.0)   # further away: closer to the axis
     array([2., 1.])
     """
-    points = _checks.float_array(points, "points")
+    points = _checks.number_array(points, "points")
     if points.ndim not in (1, 2) or points.shape[-1] != 2:
         raise ValueError(f"points must have shape (2,) or (N, 2), got {points.shape}")
-    d = _checks.real_in(d, "d", 0, None, low_open=True)
+    d = _checks.scale(d, "d")
     w = -points[..., 1]
-    if np.any(w <= 0):
-        raise ValueError("points must be in front of the camera (z < 0)")
+    if np.any(w < _checks.MIN_POSITIVE):
+        raise ValueError(
+            f"points must be in front of the camera: z <= -{_checks.MIN_POSITIVE:g}, got z = "
+            f"{-w.min():g}"
+        )
     return _result(d * points[..., 0] / w)
 
 
@@ -169,8 +176,9 @@ def lerp_affine(a1: object, a2: object, s: object) -> np.ndarray | float:
     >>> lerp_affine(0.0, 1.0, 0.75)
     0.75
     """
-    a1, a2 = _checks.float_array(a1, "a1"), _checks.float_array(a2, "a2")
+    a1, a2 = _fraction(a1, "a1"), _fraction(a2, "a2")
     s = _fraction(s, "s")
+    a1, a2, s = _checks.broadcast(a1=a1, a2=a2, s=s)
     return _result(_lerp(a1, a2, s))
 
 
@@ -184,6 +192,7 @@ def lerp_inverse_w(w1: object, w2: object, s: object) -> np.ndarray | float:
     """
     w1, w2 = _depths(w1, w2)
     s = _fraction(s, "s")
+    w1, w2, s = _checks.broadcast(w1=w1, w2=w2, s=s)
     return _result(_lerp(1 / w1, 1 / w2, s))
 
 
@@ -204,7 +213,7 @@ def lerp_perspective(
     a1, a2 : array_like
         The attribute at A and B.
     w1, w2 : array_like
-        View depths of A and B, > 0.
+        View depths of A and B, in [1e-12, 1e12].
     s : array_like
         Screen parameter(s). All five broadcast together.
 
@@ -213,9 +222,10 @@ def lerp_perspective(
     >>> lerp_perspective(0.0, 1.0, 1.0, 3.0, 0.5)   # half-way on screen is only 1/4 along AB
     0.25
     """
-    a1, a2 = _checks.float_array(a1, "a1"), _checks.float_array(a2, "a2")
+    a1, a2 = _fraction(a1, "a1"), _fraction(a2, "a2")
     w1, w2 = _depths(w1, w2)
     s = _fraction(s, "s")
+    a1, a2, w1, w2, s = _checks.broadcast(a1=a1, a2=a2, w1=w1, w2=w2, s=s)
     if np.any(_lerp(1 / w1, 1 / w2, s) <= 0):
         raise ValueError("s must be where the line is visible: (1-s)/w1 + s/w2 > 0")
     return _result(_lerp_perspective(a1, a2, w1, w2, s))
@@ -238,7 +248,7 @@ def gap_peak(w1: object, w2: object) -> tuple[np.ndarray | float, np.ndarray | f
     Parameters
     ----------
     w1, w2 : array_like
-        View depths of A and B, > 0; they broadcast together.
+        View depths of A and B, in [1e-12, 1e12]; they broadcast together.
 
     Returns
     -------
@@ -251,5 +261,6 @@ def gap_peak(w1: object, w2: object) -> tuple[np.ndarray | float, np.ndarray | f
     (0.75, 0.5)
     """
     w1, w2 = _depths(w1, w2)
+    w1, w2 = _checks.broadcast(w1=w1, w2=w2)
     s_star, gap = _gap_peak(w1, w2)
     return _result(s_star), _result(gap)

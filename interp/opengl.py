@@ -3,7 +3,10 @@
 Uses moderngl with a headless EGL context; on Debian that is Mesa's llvmpipe software renderer
 (packages ``libegl1`` and ``libgl1-mesa-dri``). Install the extra with ``pip install
 "interp[gl]"``. The vertex shader passes clip coordinates straight through, so OpenGL clips,
-divides, maps to the viewport and interpolates exactly as the specification says.
+divides, maps to the viewport and interpolates exactly as the specification says; or, with
+``vertex_divide=True``, it makes the classic mistake of dividing by w itself and writing w = 1
+(see :mod:`interp.shaders`). Outputs can be ``smooth``, ``noperspective`` or ``flat`` (with
+OpenGL's default provoking vertex, the last).
 """
 
 from __future__ import annotations
@@ -26,10 +29,16 @@ in vec4 in_clip;
 in vec4 in_attribute;
 {qualifier} out vec4 value;
 void main() {{
-    gl_Position = in_clip;
+    gl_Position = {position};
     value = in_attribute;
 }}
 """
+
+#: What the vertex shader writes: clip coordinates as given, or divided by w (the mistake).
+_POSITIONS = {False: "in_clip", True: "vec4(in_clip.xyz / in_clip.w, 1.0)"}
+
+#: The GLSL qualifier of each mode.
+_QUALIFIERS = {"perspective": "smooth", "affine": "noperspective", "flat": "flat"}
 
 _FRAGMENT = """
 #version 330
@@ -98,14 +107,18 @@ class Renderer:
            [1., 1., 1., 1.]], dtype=float32)
     """
 
-    def __init__(self, width: int, height: int, mode: str = "perspective") -> None:
+    def __init__(
+        self, width: int, height: int, mode: str = "perspective", vertex_divide: bool = False
+    ) -> None:
         self.width = _checks.positive_int(width, "width")
         self.height = _checks.positive_int(height, "height")
-        mode = _checks.choice(mode, "mode", ("perspective", "affine"))
-        qualifier = "smooth" if mode == "perspective" else "noperspective"
+        mode = _checks.choice(mode, "mode", tuple(_QUALIFIERS))
+        if not isinstance(vertex_divide, bool):
+            raise TypeError("vertex_divide must be True or False")
+        qualifier = _QUALIFIERS[mode]
         ctx = self.ctx = context()
         self.program = ctx.program(
-            vertex_shader=_VERTEX.format(qualifier=qualifier),
+            vertex_shader=_VERTEX.format(qualifier=qualifier, position=_POSITIONS[vertex_divide]),
             fragment_shader=_FRAGMENT.format(qualifier=qualifier),
         )
         size = (self.width, self.height)
@@ -144,6 +157,7 @@ class Renderer:
         ctx.enable(ctx.DEPTH_TEST)
         ctx.disable(ctx.CULL_FACE)
         ctx.depth_func = "<"
+        ctx.provoking_vertex = ctx.LAST_VERTEX_CONVENTION  # OpenGL's default, said out loud
         self.framebuffer.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
         if len(triangles):
             vao.render(mode=ctx.TRIANGLES, vertices=3 * len(triangles))
@@ -177,12 +191,15 @@ def render(
     width: int,
     height: int,
     mode: str = "perspective",
+    vertex_divide: bool = False,
 ) -> GLImage:
     """Draw once with OpenGL: the counterpart of :func:`interp.rasterize`.
 
     Parameters are those of :func:`interp.rasterize` (``mode`` is ``"perspective"`` for GLSL
-    ``smooth`` or ``"affine"`` for ``noperspective``; at most 4 attribute columns).
-    Values come back as float32, OpenGL's precision.
+    ``smooth``, ``"affine"`` for ``noperspective``, or ``"flat"``; at most 4 attribute columns),
+    and ``vertex_divide``: the vertex shader divides by w itself and writes w = 1 (the
+    counterpart of :func:`interp.shaders.shade` with ``divided=True``). Values come back as
+    float32, OpenGL's precision.
 
     Examples
     --------
@@ -195,7 +212,7 @@ def render(
     >>> float(np.abs(gl.values - ours)[covered].max()) < 1e-5
     True
     """
-    gl = Renderer(width, height, mode)
+    gl = Renderer(width, height, mode, vertex_divide)
     try:
         return gl.draw(clip, attributes, triangles)
     finally:

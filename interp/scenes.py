@@ -39,6 +39,15 @@ class Scene:
     triangles: np.ndarray
     camera: Camera
 
+    def __post_init__(self) -> None:
+        clip = _checks.float_array(self.clip, "clip", (None, 4))
+        uv = _checks.float_array(self.uv, "uv", (len(clip), 2))
+        triangles = _checks.index_array(self.triangles, "triangles", len(clip), (None, 3))
+        if not isinstance(self.camera, Camera):
+            raise TypeError(f"camera must be an interp.Camera, got {type(self.camera).__name__}")
+        for name, value in (("clip", clip), ("uv", uv), ("triangles", triangles)):
+            object.__setattr__(self, name, value)
+
 
 #: Most quads per side of the ground plane (4 * 256**2 vertices would already be silly).
 MAX_QUADS = 256
@@ -61,7 +70,7 @@ def ground_plane(
         Slider values instead of a camera: height, pitch, yaw, distance, fovy, near, far,
         aspect (see :class:`~interp.camera.Camera`).
     size : float
-        Side of the square, > 0.
+        Side of the square, in [1e-12, 1e12].
     quads : int
         Squares per side, in [1, 256]; each is two triangles (16 gives 512 triangles).
         Smaller triangles make affine interpolation less wrong: the PlayStation's remedy.
@@ -87,7 +96,7 @@ def ground_plane(
         raise TypeError("give either camera or camera parameters, not both")
     if not isinstance(camera, Camera):
         raise TypeError(f"camera must be an interp.Camera, got {type(camera).__name__}")
-    size = _checks.real_in(size, "size", 0, None, low_open=True)
+    size = _checks.scale(size, "size")
     quads = _checks.positive_int(quads, "quads", MAX_QUADS)
 
     steps = np.linspace(0.0, 1.0, quads + 1)

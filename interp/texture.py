@@ -19,16 +19,14 @@ MAX_FREQUENCY = 1024
 
 
 def _uv_images(u: object, v: object, covered: object) -> tuple[np.ndarray, ...]:
-    u = _checks.float_array(u, "u")
-    v = _checks.float_array(v, "v")
+    u = _checks.number_array(u, "u")
+    v = _checks.number_array(v, "v")
     if u.ndim != 2 or u.shape != v.shape:
         raise ValueError(f"u and v must be images of one shape (H, W), got {u.shape}, {v.shape}")
     if covered is None:
         covered = np.ones(u.shape, dtype=bool)
     else:
-        covered = np.asarray(covered)
-        if covered.dtype != bool or covered.shape != u.shape:
-            raise ValueError(f"covered must be a bool image of shape {u.shape}")
+        covered = _checks.bool_image(covered, "covered", u.shape)
     return u, v, covered
 
 
@@ -45,7 +43,8 @@ def checkerboard(
     Parameters
     ----------
     u, v : (H, W) array_like
-        Texture coordinates at each pixel, e.g. the two channels from :func:`interp.rasterize`.
+        Texture coordinates at each pixel, e.g. the two channels from :func:`interp.rasterize`,
+        in [-1e12, 1e12].
     frequency : float
         Checks per unit of u and of v, in (0, 1024].
     filtered : bool
@@ -154,7 +153,8 @@ def texel_error(uv: object, uv_reference: object, frequency: float = 8) -> np.nd
     Parameters
     ----------
     uv, uv_reference : (H, W, 2) array_like
-        E.g. affine and perspective-correct ``(u, v)`` from :func:`interp.rasterize`.
+        E.g. affine and perspective-correct ``(u, v)`` from :func:`interp.rasterize`, in
+        [-1e12, 1e12].
     frequency : float
         Texels per unit of (u, v), in (0, 1024].
 
@@ -167,8 +167,8 @@ def texel_error(uv: object, uv_reference: object, frequency: float = 8) -> np.nd
     >>> texel_error([[[0.5, 0.5]]], [[[0.2, 0.1]]], frequency=10)
     array([[5.]])
     """
-    uv = _checks.float_array(uv, "uv")
-    uv_reference = _checks.float_array(uv_reference, "uv_reference")
+    uv = _checks.number_array(uv, "uv")
+    uv_reference = _checks.number_array(uv_reference, "uv_reference")
     if uv.ndim != 3 or uv.shape[2] != 2 or uv.shape != uv_reference.shape:
         raise ValueError(
             f"uv and uv_reference must both have shape (H, W, 2), got {uv.shape} and "

@@ -227,7 +227,23 @@ def test_presentation_mode_makes_bigger_apps():
         apps.presentation(False)
     small = apps.st_mapping()
     assert big.figure.get_size_inches()[0] > small.figure.get_size_inches()[0]
-    assert big.controls["w1"].layout.width == "420px"
+    assert big.controls["w1"].layout.width == "380px"
+
+
+@pytest.mark.parametrize("name", sorted(apps.ALL))
+def test_every_figure_fits_a_laptop_and_a_projector(name):
+    # 848 px of output on a 1280 x 800 laptop with JupyterLab's file browser open; a 1280 x 720
+    # projector in presentation mode (the browser tests check the pages themselves).
+    from interp.apps._app import FIT, FIT_PRESENTATION
+
+    width, height = apps.ALL[name]().figure.get_size_inches()
+    assert width <= FIT[0] <= 8.48 and height <= FIT[1]
+    apps.presentation(True)
+    try:
+        width, height = apps.ALL[name]().figure.get_size_inches()
+    finally:
+        apps.presentation(False)
+    assert width <= FIT_PRESENTATION[0] and height <= FIT_PRESENTATION[1]
 
 
 def test_unknown_control_is_named():

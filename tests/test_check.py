@@ -82,6 +82,32 @@ def _where_mirrored(x1, z1, x2, z2, d):  # dividing by z instead of -z mirrors a
     return (m - a) / (b - a)
 
 
+def _table(**rows):
+    """Lesson 7's worked-example table, right, with some rows changed."""
+    from interp import worked
+
+    right = {k: v for k, v in worked.table().items() if k in check.WORKED_ROWS}
+    return lambda: {**right, **rows}
+
+
+def _table_by_hand():
+    # typed in as a student would, in plain Python numbers and lists
+    return {
+        "w": [1, 2, 4],
+        "ndc x": [-3 / 4, 3 / 4, -1 / 4],
+        "ndc y": [-0.75, -0.75, 0],
+        "window x": [1, 7, 3],
+        "window y": [1, 1, 4],
+        "b": [1 / 4, 1 / 4, 1 / 2],
+        "lambda": np.array([0.5, 0.25, 0.25]),
+        "u": 3 / 8,
+    }
+
+
+def _near_clip_one_minus(z1, w1, z2, w2):
+    return 1 - (z1 + w1) / ((z1 + w1) - (z2 + w2))
+
+
 RIGHT = [
     (check.project, "d x / -z", lambda x, z, d: d * x / -z),
     (check.project, "d x / |z|", lambda x, z, d: d * x / abs(z)),
@@ -153,6 +179,22 @@ RIGHT = [
     ),
     (check.clip_barycentrics, "numpy array", _weights_numpy),
     (check.clip_barycentrics, "tuple, cleared of fractions", _weights_tuple),
+    (check.worked_example, "the library's numbers", _table()),
+    (check.worked_example, "typed in by hand", _table_by_hand),
+    (
+        check.near_clip,
+        "distances to the plane",
+        lambda z1, w1, z2, w2: (z1 + w1) / ((z1 + w1) - (z2 + w2)),
+    ),
+    (check.near_clip, "solved for t", lambda z1, w1, z2, w2: -(z1 + w1) / (z2 - z1 + w2 - w1)),
+    (check.recap_1, "letters", lambda: {1: "b", 2: "a", 3: "b", 4: "b"}),
+    (
+        check.recap_4,
+        "upper case, lists, string keys",
+        lambda: {1: ["D", "b", "c"], "2": "A", 3: "b", 4: "a"},
+    ),
+    (check.recap_7, "letters in any order", lambda: {1: "fedb", 2: "a", 3: "a", 4: "a"}),
+    (check.recap_9, "with commas", lambda: {1: "a", 2: "a", 3: "b, c, f", 4: "a"}),
 ]
 
 
@@ -184,6 +226,14 @@ WRONG = [
     (check.clip_barycentrics, "one number", lambda b0, b1, b2, w0, w1, w2: b0),
     (check.clip_barycentrics, "forgot return", lambda *args: None),
     (check.clip_barycentrics, "not written yet", _not_written),
+    (check.worked_example, "not written yet", _not_written),
+    (check.worked_example, "forgot return", lambda: None),
+    (check.worked_example, "a list", lambda: [1, 2, 4]),
+    (check.worked_example, "raises", lambda: 1 / 0),
+    (check.recap_4, "not written yet", _not_written),
+    (check.recap_4, "forgot return", lambda: None),
+    (check.recap_4, "a string", lambda: "bcd a b a"),
+    (check.near_clip, "not written yet", _not_written),
     # project
     (check.project, "mirrored", lambda x, z, d: d * x / z),
     (check.project, "no d", lambda x, z, d: x / -z),
@@ -301,6 +351,29 @@ WRONG = [
         "normalised by the sum of b",
         lambda b0, b1, b2, w0, w1, w2: [b0 / w0, b1 / w1, b2 / w2 * 0],
     ),
+    # worked_example
+    (check.worked_example, "a row missing", lambda: {"w": (1, 2, 4)}),
+    (check.worked_example, "clip z for w", _table(w=(0.125, 1.375, 3.875))),
+    (check.worked_example, "no divide", _table(**{"ndc x": (-0.75, 1.5, -1.0)})),
+    (check.worked_example, "rows from the top", _table(**{"window y": (7, 7, 4)})),
+    (check.worked_example, "window x slip", _table(**{"window x": (1, 7, 4)})),
+    (check.worked_example, "lambda = b", _table(**{"lambda": (0.25, 0.25, 0.5)})),
+    (check.worked_example, "lambda not normalised", _table(**{"lambda": (0.25, 0.125, 0.125)})),
+    (check.worked_example, "lambda weighted by w", _table(**{"lambda": (1 / 11, 2 / 11, 8 / 11)})),
+    (check.worked_example, "affine u", _table(u=0.625)),
+    (check.worked_example, "two weights", _table(**{"lambda": (0.5, 0.25)})),
+    (check.worked_example, "u as text", _table(u="0.375")),
+    # recap
+    (check.recap_4, "a wrong option", lambda: {1: "bcde", 2: "a", 3: "b", 4: "a"}),
+    (check.recap_4, "one missing", lambda: {1: "bc", 2: "a", 3: "b", 4: "a"}),
+    (check.recap_4, "two for one", lambda: {1: "bcd", 2: "ab", 3: "b", 4: "z"}),
+    (check.recap_4, "unanswered", lambda: {1: "bcd", 2: "a", 3: "b", 4: 2}),
+    (check.recap_4, "a question too many", lambda: {1: "bcd", 2: "a", 3: "b", 4: "a", 5: "a"}),
+    # near_clip
+    (check.near_clip, "from the outside vertex", _near_clip_one_minus),
+    (check.near_clip, "the far plane", lambda z1, w1, z2, w2: (z1 - w1) / ((z1 - w1) - (z2 - w2))),
+    (check.near_clip, "in NDC", lambda z1, w1, z2, w2: (-1 - z1 / w1) / (z2 / w2 - z1 / w1)),
+    (check.near_clip, "z only", lambda z1, w1, z2, w2: (z1 + w1) / (z1 - z2)),
 ]
 
 #: The message each wrong answer must get, word for word.
@@ -530,6 +603,103 @@ EXPECTED = {
         "clip_barycentrics",
         "normalised by the sum of b",
     ): "✗ for (b0, b1, b2, w0, w1, w2) = (0.5, 0.5, 0, 1, 3, 2) the answer is (0.75, 0.25, 0), your function gave (0.5, 0.166667, 0).",
+    (
+        "worked_example",
+        "not written yet",
+    ): "… not written yet: replace `raise NotImplementedError()` with your code, then run the cell again.",
+    ("worked_example", "forgot return"): "✗ your function returned None: did you forget `return`?",
+    ("worked_example", "a list"): "✗ return a dict of the table's rows, got list.",
+    ("worked_example", "raises"): "✗ your function divided by zero.",
+    (
+        "recap_4",
+        "not written yet",
+    ): "… not written yet: replace `raise NotImplementedError()` with your code, then run the cell again.",
+    ("recap_4", "forgot return"): "✗ your function returned None: did you forget `return`?",
+    (
+        "recap_4",
+        "a string",
+    ): "✗ return a dict from question number to letters, e.g. {1: 'a', 2: 'bc'}; got str.",
+    (
+        "near_clip",
+        "not written yet",
+    ): "… not written yet: replace `raise NotImplementedError()` with your code, then run the cell again.",
+    (
+        "worked_example",
+        "a row missing",
+    ): "✗ your table has no row 'ndc x'; the rows: ['w', 'ndc x', 'ndc y', 'window x', 'window y', 'b', 'lambda', 'u'].",
+    (
+        "worked_example",
+        "clip z for w",
+    ): "✗ row 'w' is (0.125, 1.375, 3.875), the answer is (1, 2, 4): that is clip z; w is the fourth coordinate, -z of the view-space point.",
+    (
+        "worked_example",
+        "no divide",
+    ): "✗ row 'ndc x' is (-0.75, 1.5, -1), the answer is (-0.75, 0.75, -0.25): that is still clip space: divide by w (the perspective divide).",
+    (
+        "worked_example",
+        "rows from the top",
+    ): "✗ row 'window y' is (7, 7, 4), the answer is (1, 1, 4): you counted from the top, like image rows; OpenGL's window y counts from the bottom.",
+    (
+        "worked_example",
+        "window x slip",
+    ): "✗ row 'window x' is (1, 7, 4), the answer is (1, 7, 3): the viewport maps NDC x from [-1, 1] onto [0, 8]: window x = (x + 1) * 8 / 2.",
+    (
+        "worked_example",
+        "lambda = b",
+    ): "✗ row 'lambda' is (0.25, 0.25, 0.5), the answer is (0.5, 0.25, 0.25): those are b unchanged (noperspective): weight each b_i by 1/w_i, then normalise.",
+    (
+        "worked_example",
+        "lambda not normalised",
+    ): "✗ row 'lambda' is (0.25, 0.125, 0.125), the answer is (0.5, 0.25, 0.25): those are the b_i / w_i: now divide them by their sum, so that they add up to 1.",
+    (
+        "worked_example",
+        "lambda weighted by w",
+    ): "✗ row 'lambda' is (0.0909091, 0.181818, 0.727273), the answer is (0.5, 0.25, 0.25): you weighted each b_i by w_i; it is 1/w_i that is linear on the screen.",
+    (
+        "worked_example",
+        "affine u",
+    ): "✗ row 'u' is 0.625, the answer is 0.375: that is the affine (noperspective) value, b_0 u_0 + b_1 u_1 + b_2 u_2: use lambda.",
+    (
+        "worked_example",
+        "two weights",
+    ): "✗ row 'lambda' must be 3 numbers, one per corner, got (0.5, 0.25).",
+    ("worked_example", "u as text"): "✗ row 'u' must be one number, got '0.375'.",
+    (
+        "recap_4",
+        "a wrong option",
+    ): "✗ recap 4: 3 of 4 right.\n\n- question 1: (e) is not right: t(s) is a curve unless w_1 = w_2.",
+    (
+        "recap_4",
+        "one missing",
+    ): "✗ recap 4: 3 of 4 right.\n\n- question 1: one right option is missing.",
+    (
+        "recap_4",
+        "two for one",
+    ): "✗ recap 4: 2 of 4 right.\n\n- question 2: it has one right answer: choose one letter.\n- question 4: there is no option (z); the options are a, b, c.",
+    (
+        "recap_4",
+        "unanswered",
+    ): '✗ recap 4: 3 of 4 right.\n\n- question 4: no answer: give its letter as a string, e.g. "b".',
+    (
+        "recap_4",
+        "a question too many",
+    ): "✗ recap 4: 4 of 4 right.\n\n- there is no question 5; the questions are 1 to 4.",
+    (
+        "near_clip",
+        "from the outside vertex",
+    ): "✗ that is measured from the outside vertex: t is 0 at the inside vertex (z1, w1).",
+    (
+        "near_clip",
+        "the far plane",
+    ): "✗ that is where the edge meets the far plane z = w; the near plane is z = -w, where z + w = 0.",
+    (
+        "near_clip",
+        "in NDC",
+    ): "✗ that interpolates NDC z = z/w, which is not linear along the edge in space (and has no meaning behind the eye): clip first, in clip space, where the distance z + w to the near plane is linear in t.",
+    (
+        "near_clip",
+        "z only",
+    ): "✗ for (z1, w1, z2, w2) = (0, 2, -3, 1) the answer is 0.5, your function gave 0.666667.",
 }
 
 
@@ -544,3 +714,28 @@ def test_wrong_answers_get_their_message(checker, label, answer):
 
 def test_every_wrong_answer_has_its_message():
     assert sorted(EXPECTED) == sorted((c.__name__, label) for c, label, _ in WRONG)
+
+
+def test_recap_questions_are_well_formed():
+    for lesson, questions in check.QUIZZES.items():
+        assert 3 <= len(questions) <= 4, lesson
+        for question in questions:
+            assert question.answer and set(question.answer) <= set(question.options)
+            assert question.answer == "".join(sorted(question.answer))
+            assert set(question.why) == set(question.options), question.text
+            assert list(question.options) == [
+                chr(ord("a") + k) for k in range(len(question.options))
+            ]
+
+
+def test_the_right_answers_of_every_recap_pass_and_every_single_wrong_option_is_explained():
+    for lesson, questions in check.QUIZZES.items():
+        key = {k: q.answer for k, q in enumerate(questions, start=1)}
+        assert check.recap(lesson, lambda key=key: key), lesson
+        for k, question in enumerate(questions, start=1):
+            for letter in question.options:
+                if letter in question.answer:
+                    continue
+                wrong = {**key, k: question.answer + letter if question.several else letter}
+                verdict = check.recap(lesson, lambda wrong=wrong: wrong)
+                assert not verdict and question.why[letter] in verdict.message

@@ -1,7 +1,7 @@
 """The lessons, in both editions, made from one source.
 
-- source/lessons/: every lesson has one exercise with its solution, and every "Try this" prompt a
-  written answer;
+- source/lessons/: every lesson has its exercises with their solutions (at least one, and the recap
+  questions last), and every "Try this" prompt a written answer;
 - lessons/ (the student edition, committed) is exactly what interp.editions makes of the source,
   stored without outputs; it runs top to bottom in a fresh kernel with no error and no warning, each
   checker answering "not written yet";
@@ -31,8 +31,10 @@ LESSONS = sorted((ROOT / "lessons").glob("*.ipynb"))
 SOURCES = editions.sources(ROOT)
 NBGRADER = ROOT / ".venv-nbgrader" / "bin" / "nbgrader"
 
-#: "Try this" prompts across the seven lessons.
-PROMPTS = 24
+#: The lessons: eight, and the cheat sheet (lesson 9, which has no "Try this" prompts).
+COUNT = 9
+#: "Try this" prompts across the lessons.
+PROMPTS = 36
 
 
 def source(path: Path) -> nbformat.NotebookNode:
@@ -43,8 +45,8 @@ def bullets(markdown: str) -> int:
     return len(re.findall(r"^- ", markdown, re.M))
 
 
-def test_there_are_seven_lessons_from_seven_sources():
-    assert [p.name[:3] for p in LESSONS] == [f"0{k}_" for k in range(1, 8)]
+def test_there_are_nine_lessons_from_nine_sources():
+    assert [p.name[:3] for p in LESSONS] == [f"0{k}_" for k in range(1, COUNT + 1)]
     assert [p.name for p in SOURCES] == [p.name for p in LESSONS]
 
 
@@ -52,21 +54,27 @@ def test_the_student_edition_is_what_the_generator_makes():
     assert editions.stale_student(ROOT) == [], "run `python -m interp.editions student`"
 
 
+def exercises(notebook: nbformat.NotebookNode) -> list[str]:
+    return [c.source for c in notebook.cells if editions.is_exercise(c)]
+
+
 @pytest.mark.parametrize("path", SOURCES, ids=lambda p: p.stem)
-def test_every_lesson_has_a_solved_exercise_and_every_prompt_an_answer(path):
+def test_every_lesson_has_solved_exercises_and_every_prompt_an_answer(path):
     notebook = source(path)
-    exercises = [c for c in notebook.cells if editions.is_exercise(c)]
-    assert len(exercises) == 1
-    exercise = exercises[0].source
-    assert exercise.count(editions.BEGIN) == exercise.count(editions.END) == 1
-    solution = exercise.split(editions.BEGIN)[1].split(editions.END)[0]
-    assert "return" in solution
-    assert re.search(r"\ncheck\.\w+\(\w+\)$", exercise), "the checker call ends the cell"
+    assert len(exercises(notebook)) >= 1
+    for exercise in exercises(notebook):
+        assert exercise.count(editions.BEGIN) == exercise.count(editions.END) == 1
+        solution = exercise.split(editions.BEGIN)[1].split(editions.END)[0]
+        assert "return" in solution
+        assert re.search(r"\ncheck\.\w+\(\w+\)$", exercise), "the checker call ends the cell"
+    lesson = int(path.name[:2])
+    assert exercises(notebook)[-1].endswith(f"check.recap_{lesson}(my_answers)"), "recap last"
     # every list of prompts is followed by an answer cell with one answer per prompt
     prompts = [i for i, c in enumerate(notebook.cells) if "**Try this**" in c.source]
     answers = [i for i, c in enumerate(notebook.cells) if editions.is_answer(c)]
-    assert len(prompts) == len(answers) >= 1
-    for p, a, after in zip(prompts, answers, [*prompts[1:], len(notebook.cells)], strict=True):
+    assert len(prompts) == len(answers) >= (0 if lesson == COUNT else 1)
+    ends = [*prompts[1:], len(notebook.cells)][: len(prompts)]
+    for p, a, after in zip(prompts, answers, ends, strict=True):
         assert p < a < after
         asked = bullets(notebook.cells[p].source.split("**Try this**")[1])
         answer = notebook.cells[a].source
@@ -98,15 +106,17 @@ def test_student_edition_is_blank_and_stored_without_outputs(path):
         assert cell["outputs"] == [] and cell["execution_count"] is None, path.name
     text = path.read_text()
     assert "SOLUTION" not in text and "**Answers**" not in text and "nbgrader" not in text
-    (exercise,) = [c for c in code if "raise NotImplementedError()" in "".join(c["source"])]
-    assert '"""' in "".join(exercise["source"]), "a docstring says what to return"
-    # no line of the solution is printed anywhere in the student edition
-    cells = source(ROOT / "source" / "lessons" / path.name).cells
-    solution = next(c.source for c in cells if editions.is_exercise(c))
-    body = solution.split(editions.BEGIN)[1].split(editions.END)[0]
+    blank = [c for c in code if "raise NotImplementedError()" in "".join(c["source"])]
+    solved = exercises(source(ROOT / "source" / "lessons" / path.name))
+    assert len(blank) == len(solved)
+    for exercise in blank:
+        assert '"""' in "".join(exercise["source"]), "a docstring says what to return"
+    # no line of any solution is printed anywhere in the student edition
     student_text = "\n".join("".join(c["source"]) for c in notebook["cells"])
-    for line in body.strip().splitlines():
-        assert re.sub(r"\s", "", line) not in re.sub(r"\s", "", student_text), line
+    for solution in solved:
+        body = solution.split(editions.BEGIN)[1].split(editions.END)[0]
+        for line in body.strip().splitlines():
+            assert re.sub(r"\s", "", line) not in re.sub(r"\s", "", student_text), line
 
 
 @pytest.mark.parametrize("path", LESSONS, ids=lambda p: p.stem)
@@ -114,7 +124,8 @@ def test_student_edition_runs_clean_and_says_not_written_yet(path, tmp_path):
     notebook = run_lesson(path, tmp_path)
     assert not editions.errors(notebook)
     verdicts = editions.verdicts(notebook)
-    assert verdicts == ["… " + check.NOT_WRITTEN], verdicts
+    solved = exercises(source(ROOT / "source" / "lessons" / path.name))
+    assert verdicts == ["… " + check.NOT_WRITTEN] * len(solved), verdicts
 
 
 @pytest.mark.parametrize("path", SOURCES, ids=lambda p: p.stem)
@@ -123,12 +134,14 @@ def test_teacher_edition_runs_with_every_exercise_right(path, tmp_path):
     editions.run(notebook, tmp_path)
     assert not editions.errors(notebook)
     verdicts = editions.verdicts(notebook)
-    assert len(verdicts) == 1 and verdicts[0].startswith("✓"), verdicts
+    assert len(verdicts) == len(exercises(source(path))), verdicts
+    assert all(v.startswith("✓") for v in verdicts), verdicts
     assert notebook.cells[1].source.startswith("%matplotlib widget"), "kept live for a rerun"
     html, _ = HTMLExporter().from_notebook_node(notebook)
-    assert "Teacher edition" in html and "<img" in html
+    assert "Teacher edition" in html and ("<img" in html or int(path.name[:2]) == COUNT)
     answers = [c.source for c in notebook.cells if c.source.startswith("**Answers**")]
-    assert answers and all(editions.BEGIN not in a for a in answers)
+    assert answers or int(path.name[:2]) == COUNT
+    assert all(editions.BEGIN not in a for a in answers)
     for a in answers:
         assert a.split("\n- ")[1].strip(), "a written answer"
 

@@ -78,7 +78,9 @@ def test_barycentrics_colour_is_the_weights_and_every_corner_is_in_view():
         rgb = np.asarray(image.image.get_array())
         drawn = np.any(rgb != 1.0, axis=2)
         assert drawn.sum() > 1000
-        np.testing.assert_allclose(rgb[drawn].sum(axis=1), 1.0, atol=1e-12)
+        # A centre that the edge, snapped to 1/256 pixel, puts inside can have a weight a few
+        # 1e-6 below 0 (weights come from the exact corners), shown clipped to 0.
+        np.testing.assert_allclose(rgb[drawn].sum(axis=1), 1.0, atol=1e-5)
         assert np.all(rgb[drawn].max(axis=0) > 0.95), "each corner's colour appears"
     camera = interp.Camera(**BARYCENTRIC_CAMERA).fitted(240, 180)
     scene = interp.ground_plane(camera, LESSON_SIZE, quads=1)

@@ -45,8 +45,38 @@ def presentation(on: bool = True) -> None:
     _PRESENTATION["on"] = bool(on)
 
 
-#: Widest figure an app makes, in inches at 100 dpi: it must fit a notebook's output area.
-MAX_WIDTH = 9.5
+#: The box an app's figure must fit, in inches at 100 dpi: a notebook's output area on a
+#: 1280 x 800 laptop screen with JupyterLab's file browser open is 848 px wide.
+FIT = (8.2, 6.0)
+#: In presentation mode: what fits on a 1280 x 720 projector beside a row or two of controls.
+FIT_PRESENTATION = (11.6, 5.0)
+#: How much larger text is in presentation mode.
+PRESENTATION_TEXT = 1.5
+#: Presentation mode's page style: larger prose and controls (Voilà and JupyterLab).
+PRESENTATION_CSS = """<style>
+.jp-RenderedHTMLCommon, .jp-RenderedMarkdown { font-size: 21px; }
+.jp-RenderedHTMLCommon h1 { font-size: 2em; } .jp-RenderedHTMLCommon h2 { font-size: 1.6em; }
+.widget-label, .widget-readout, .widget-dropdown select, .widget-inline-hbox label,
+.interp-readout { font-size: 19px !important; line-height: 1.4; }
+.widget-slider .noUi-handle { transform: scale(1.3); }
+</style>"""
+
+
+def figure_size(size: tuple[float, float], presentation: bool) -> tuple[float, float]:
+    """The size an app draws a figure of nominal ``size`` at: shrunk to fit :data:`FIT` (or, in
+    presentation mode, grown by up to 1.4 within :data:`FIT_PRESENTATION`), shape kept.
+
+    Examples
+    --------
+    >>> figure_size((9.5, 2.9), False)          # too wide for a laptop's notebook: shrunk
+    (8.2, 2.5)
+    >>> figure_size((6.5, 5.0), True)           # a projector: larger, but no taller than fits
+    (6.5, 5.0)
+    """
+    width, height = size
+    box_width, box_height = FIT_PRESENTATION if presentation else FIT
+    scale = min(1.4 if presentation else 1.0, box_width / width, box_height / height)
+    return round(width * scale, 2), round(height * scale, 2)
 
 
 class App:
@@ -69,14 +99,13 @@ class App:
 
     def __init__(self, figure_class: type[LessonFigure]) -> None:
         keep_freed_memory()  # sliders feel live: numpy's temporaries are recycled
-        width, height = figure_class.size
-        if width > MAX_WIDTH:
-            raise ValueError(f"figure width must be at most {MAX_WIDTH} in, got {width}")
-        scale = 1.5 if _PRESENTATION["on"] else 1.0
+        presenting = _PRESENTATION["on"]
+        width, height = figure_size(figure_class.size, presenting)
+        scale = PRESENTATION_TEXT if presenting else 1.0
         self.controls = {name: control(param) for name, param in figure_class.PARAMS.items()}
         self._style = {"font.size": 9 * scale}
         with styled(**self._style), plt.ioff():
-            self.figure = plt.figure(figsize=(width * scale, height * scale))
+            self.figure = plt.figure(figsize=(width, height))
             self.plot = figure_class(self.figure, **self.values)
         # Lay the figure out once, then freeze it: constrained layout would otherwise redo its
         # work (about half of a redraw) on every slider step, for a figure whose shape never
@@ -84,9 +113,8 @@ class App:
         self.figure.get_layout_engine().execute(self.figure)
         self.figure.set_layout_engine("none")
         for widget in self.controls.values():
-            if scale > 1:
-                widget.layout.width = "420px"
-                widget.style.font_size = "18px"
+            if presenting:  # three controls to a row on a 1280 px projector
+                widget.layout.width = "380px"
             widget.observe(self._changed, names="value")
         self._handle = None  # the figure is drawn already; displaying it shows that drawing
         #: The figure's key result as text (a live region: screen readers announce changes).
@@ -156,6 +184,8 @@ class App:
         return panel
 
     def _ipython_display_(self) -> None:
+        if _PRESENTATION["on"]:  # larger prose and controls on the whole page
+            display(HTML(PRESENTATION_CSS))
         if self.live:
             display(self.widget)
         else:  # a picture with alt text, the result as text, then the controls

@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.axes import Axes
+from matplotlib.patches import Rectangle
 
 from interp import depth, lerp
 from interp.plots._base import Plot
-from interp.plots._style import CORRECT, OTHERS, markevery
+from interp.plots._style import AFFINE, CORRECT, OTHERS, markevery
 
 
 def _normalized(y: np.ndarray) -> np.ndarray:
@@ -15,15 +16,47 @@ def _normalized(y: np.ndarray) -> np.ndarray:
     return (y - y[0]) / span if span != 0 else np.zeros_like(y)
 
 
+def clipped_ranges(w1: float, w2: float, near: float, far: float) -> list[tuple[float, float]]:
+    """The ranges of the screen parameter s (0 at the end of depth ``w1``, 1 at ``w2``) whose
+    points lie in front of the near plane or beyond the far plane: clipping removes them.
+
+    ``1/w`` is linear in s, so each range is found by solving ``1/w(s) = 1/near`` or ``1/far``.
+
+    Examples
+    --------
+    >>> [(round(a, 4), b) for a, b in clipped_ranges(1.0, 8.0, near=0.5, far=4.0)]  # s = 6/7
+    [(0.8571, 1.0)]
+    >>> clipped_ranges(2.0, 3.0, near=0.5, far=100.0)
+    []
+    """
+    ranges = []
+    inverse = (1 / w1, 1 / w2)
+    for plane, outside in ((near, lambda x: x > 1 / near), (far, lambda x: x < 1 / far)):
+        ends = [outside(x) for x in inverse]
+        if not any(ends):
+            continue
+        if all(ends):
+            ranges.append((0.0, 1.0))
+            continue
+        s = (inverse[0] - 1 / plane) / (inverse[0] - inverse[1])  # where 1/w(s) = 1/plane
+        ranges.append((0.0, float(s)) if ends[0] else (float(s), 1.0))
+    return ranges
+
+
 class DepthAcross(Plot):
     """Along the image of a segment from depth ``w1`` to ``w2``: view depth w, ``1/w`` and NDC z,
     each rescaled to run from 0 to 1. ``1/w`` and NDC z are straight lines (linear on the
-    screen); w is not.
+    screen); w is not. Where the segment lies in front of the near plane or beyond the far
+    plane, the screen is shaded: clipping removes that part (its NDC z is outside [-1, 1]),
+    but the formulas, and so the straight lines, go on through it.
 
     Examples
     --------
     >>> import matplotlib.pyplot as plt
     >>> plot = DepthAcross(plt.subplots()[1], w1=1.0, w2=3.0, near=0.5, far=10.0)
+    >>> bool(np.allclose(plot.curves["NDC z"].get_ydata(), plot.curves["1/w"].get_ydata()))
+    True
+    >>> plot.update(far=2.0)                 # the far plane inside the segment: still straight
     >>> bool(np.allclose(plot.curves["NDC z"].get_ydata(), plot.curves["1/w"].get_ydata()))
     True
     """
@@ -40,6 +73,18 @@ class DepthAcross(Plot):
         self.ax = ax
         self.s = np.linspace(0, 1, points)
         every = markevery(points)
+        self.shades = [
+            ax.add_patch(
+                Rectangle(
+                    (0, -0.02), 0, 1.04, facecolor="0.88", edgecolor="0.6", hatch="//", zorder=0
+                )
+            )
+            for _ in range(2)
+        ]
+        self.shade_labels = [
+            ax.text(0, 0.5, "", ha="center", va="center", rotation=90, fontsize="small")
+            for _ in range(2)
+        ]
         self.curves = {
             "w (view depth)": ax.plot(
                 [],
@@ -72,6 +117,7 @@ class DepthAcross(Plot):
         ax.set_xlabel("screen parameter s")
         ax.set_ylabel("rescaled to [0, 1]")
         ax.legend(loc="upper left")
+        self.clipped: list[tuple[float, float]] = []
         super().__init__(w1=w1, w2=w2, near=near, far=far)
 
     def redraw(self) -> None:
@@ -81,17 +127,34 @@ class DepthAcross(Plot):
         w = 1 / inverse_w
         self.curves["w (view depth)"].set_data(self.s, _normalized(w))
         self.curves["1/w"].set_data(self.s, _normalized(-inverse_w))
-        z = depth.ndc_depth(np.clip(w, p["near"], p["far"]), p["near"], p["far"])
+        # NDC z = A + B/w for every w > 0; outside [-1, 1] the point is clipped, not moved.
+        z = depth.ndc_depth(w, p["near"], p["far"])
         self.curves["NDC z"].set_data(self.s, _normalized(z))
+        self.clipped = clipped_ranges(p["w1"], p["w2"], p["near"], p["far"])
+        for k, (shade, label) in enumerate(zip(self.shades, self.shade_labels, strict=True)):
+            low, high = self.clipped[k] if k < len(self.clipped) else (0.0, 0.0)
+            shade.set_x(low)
+            shade.set_width(high - low)
+            label.set_position(((low + high) / 2, 0.5))
+            label.set_text("clipped" if high - low > 0.06 else "")
 
     @property
     def dynamic(self) -> list:
-        return list(self.curves.values())
+        return [*self.shades, *self.shade_labels, *self.curves.values()]
+
+
+#: Line styles of the precision plot's three near planes.
+_NEAR_STYLES = (CORRECT, OTHERS[0], AFFINE)
 
 
 class DepthPrecision(Plot):
     """The smallest depth difference a depth buffer notices, against depth, for three near
-    planes: each tenfold smaller near plane makes every depth tenfold coarser.
+    planes (the chosen one, ten times larger, ten times smaller) and one of the buffers of
+    :data:`interp.depth.DEPTH_BUFFERS`.
+
+    For a 24-bit fixed-point buffer each tenfold smaller near plane makes every depth tenfold
+    coarser; a float32 buffer storing window z is the same beyond about twice the near plane;
+    a reversed-Z float32 buffer hardly depends on the near plane at all.
 
     Examples
     --------
@@ -111,7 +174,6 @@ class DepthPrecision(Plot):
     ) -> None:
         self.ax = ax
         self.points = points
-        styles = [CORRECT, *OTHERS[:2]]
         self.lines = [
             ax.plot(
                 [],
@@ -121,7 +183,7 @@ class DepthPrecision(Plot):
                 marker=st["marker"],
                 markevery=markevery(points),
             )[0]
-            for st in styles
+            for st in _NEAR_STYLES
         ]
         ax.set_xscale("log")
         ax.set_yscale("log")
@@ -130,26 +192,41 @@ class DepthPrecision(Plot):
         super().__init__(near=near, far=far, buffer=buffer)
 
     def redraw(self) -> None:
-        """Draw for the current ``near``, ``far`` and ``buffer`` ("float32" or "fixed24")."""
+        """Draw for the current ``near``, ``far`` and ``buffer``."""
         near, far = float(self.params["near"]), float(self.params["far"])
+        buffer = str(self.params["buffer"])
         steps = []
         for line, factor in zip(self.lines, (1.0, 10.0, 0.1), strict=True):
             n = near * factor
-            if n >= far:
+            if 1.1 * n >= 0.9 * far:
                 line.set_data([], [])
                 line.set_label("_")
                 continue
-            w = np.geomspace(1.1 * n, far, self.points)  # float32 is absurdly fine at z = 0
-            step = depth.depth_resolution(w, n, far, str(self.params["buffer"]))
+            # From just beyond the near plane to just before the far one: right at the near
+            # plane float32 window z is absurdly fine, and right at the far plane reversed
+            # depth is 0, where float32 is finer still.
+            w = np.geomspace(1.1 * n, 0.9 * far, self.points)
+            step = depth.depth_step(w, n, far, buffer)
             line.set_data(w, step)
             line.set_label(f"near = {n:g}")
             steps.append(step)
         every = np.concatenate(steps)
         self.ax.set_xlim(near * 0.1, far)
-        self.ax.set_ylim(every.min() / 2, every.max() * 2)
-        self.ax.set_title(f"{self.params['buffer']} depth buffer, far = {far:g}")
+        self.ax.set_ylim(*_decades(every.min(), every.max()))
+        self.ax.set_title(f"{buffer} depth buffer, far = {far:g}")
         self.ax.legend(loc="upper left", fontsize="small")
 
     @property
     def dynamic(self) -> list:
         return [*self.lines, self.ax.title]
+
+
+def _decades(low: float, high: float) -> tuple[float, float]:
+    """The powers of ten just outside ``[low / 2, high * 2]``: small changes keep the axis.
+
+    Examples
+    --------
+    >>> _decades(3e-7, 2e-3)
+    (1e-07, 0.01)
+    """
+    return float(10.0 ** np.floor(np.log10(low / 2))), float(10.0 ** np.ceil(np.log10(high * 2)))

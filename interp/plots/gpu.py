@@ -1,4 +1,5 @@
-"""Figures of lesson 7: clipping as the camera moves through a plane, and the approximation lab."""
+"""Figures of lesson 8: the shader's view, clipping as the camera moves through a plane, and the
+approximation lab."""
 
 from __future__ import annotations
 
@@ -6,13 +7,92 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 
-from interp import approximation
+from interp import approximation, shaders
 from interp.camera import Camera
 from interp.plots._base import Plot
 from interp.plots._style import AFFINE, CORRECT, bare
 from interp.raster import fragments, interpolate, viewport
-from interp.scenes import LESSON_SIZE, ground_plane
+from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
 from interp.texture import checkerboard
+
+#: What the shader figure's right panel can show: a qualifier, or the vertex-shader mistake.
+SHADER_OUTPUTS = {
+    "noperspective": ("noperspective", False),
+    "flat": ("flat", False),
+    "smooth, divided by w in the vertex shader": ("smooth", True),
+}
+
+#: Colours of the ground quad's corners (u, v) = (0, 0), (1, 0), (0, 1), (1, 1) in the shader
+#: figure: red, green, blue and white, so that each flat triangle is one clear colour.
+SHADER_COLOURS = np.array([[1.0, 0.0, 0.0], [0.0, 0.6, 0.0], [0.0, 0.2, 1.0], [1.0, 1.0, 1.0]])
+
+
+class ShaderView(Plot):
+    """A colour per corner across the ground quad, as a fragment shader receives it: ``smooth``
+    on the left; on the right ``noperspective``, ``flat`` (the provoking vertex, the last of
+    each triangle, gives its colour to all of it) or ``smooth`` from a vertex shader that
+    divided by w itself and wrote w = 1 (:mod:`interp.shaders`).
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> view = ShaderView(Figure().subplots(1, 2), width=32, height=24)
+    >>> view.difference_from("noperspective") < 1e-12   # the mistake is noperspective
+    True
+    """
+
+    def __init__(
+        self,
+        axes: list[Axes],
+        camera: Camera | None = None,
+        output: str = "smooth, divided by w in the vertex shader",
+        width: int = 240,
+        height: int = 180,
+    ) -> None:
+        self.axes = list(axes)
+        self.images = [
+            ax.imshow(np.ones((height, width, 3)), interpolation="nearest") for ax in self.axes
+        ]
+        for ax in self.axes:
+            ax.set_axis_off()
+        self.axes[0].set_title("smooth (the default)")
+        self.values: dict[str, np.ndarray] = {}
+        super().__init__(camera=camera or LESSON_CAMERA, output=output, width=width, height=height)
+
+    def _draw(self, qualifier: str, divided: bool) -> tuple[np.ndarray, np.ndarray]:
+        p = self.params
+        width, height = int(p["width"]), int(p["height"])
+        scene = ground_plane(p["camera"].fitted(width, height), LESSON_SIZE, quads=1)
+        self.behind = int(np.sum(scene.clip[:, 3] <= 0))
+        return shaders.shade(
+            scene.clip, SHADER_COLOURS, scene.triangles, width, height, qualifier, divided
+        )
+
+    def redraw(self) -> None:
+        """Draw for the current ``camera`` and ``output`` (a key of :data:`SHADER_OUTPUTS`)."""
+        output = str(self.params["output"])
+        self.values = {"smooth": self._draw("smooth", False)}
+        self.values[output] = self._draw(*SHADER_OUTPUTS[output])
+        for image, key in zip(self.images, ("smooth", output), strict=True):
+            values, covered = self.values[key]
+            image.set_data(np.where(covered[..., None], np.clip(values, 0, 1), 1.0))
+        self.axes[1].set_title(output.replace(", divided", ",\ndivided"))
+
+    def difference_from(self, other: str) -> float:
+        """The largest colour difference between the right panel and ``other`` ("smooth",
+        "noperspective" or "flat", drawn for the same camera), over pixels both cover."""
+        output = str(self.params["output"])
+        values, covered = self.values[output]
+        if other == "smooth":
+            reference, drawn = self.values["smooth"]
+        else:
+            reference, drawn = self._draw(other, False)
+        both = covered & drawn
+        return float(np.abs(values - reference)[both].max()) if both.any() else 0.0
+
+    @property
+    def dynamic(self) -> list:
+        return [*self.images, self.axes[1].title]
 
 
 class ClippingView(Plot):
@@ -148,6 +228,7 @@ class ApproximationLab(Plot):
         size = (int(p["width"]), int(p["height"]), float(p["frequency"]))
         spans = approximation.span_costs(p["camera"], *size)
         tess = approximation.tessellation_costs(p["camera"], *size)
+        self.costs = {"spans": spans, "tessellation": tess}
         for note in self.notes.values():
             note.set_visible(False)
         for line, costs in ((self.spans, spans), (self.tessellation, tess)):

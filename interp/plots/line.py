@@ -30,6 +30,9 @@ class LineView(Plot):
     point C of AB that it shows: c and m differ unless A and B are equally deep. With
     ``samples`` > 0, also equally spaced image points and their rays fanning out onto AB.
 
+    The whole line through A and B is drawn faintly: Lengyel's ``a x + b z = c``. When it passes
+    through the eye (``c = 0``) the segment is seen edge-on and its image is a single point.
+
     Parameters
     ----------
     ax : Axes
@@ -70,6 +73,7 @@ class LineView(Plot):
         ax.plot([0], [0], marker=">", color="black", markersize=9, linestyle="none")
         ax.annotate("eye", (0, 0), xytext=(-4, -12), textcoords="offset points", fontsize="small")
         (self.plane,) = ax.plot([], [], color="0.4", linewidth=2.5, solid_capstyle="butt")
+        (self.carrier,) = ax.plot([], [], color="0.7", linewidth=0.8, linestyle=(0, (6, 3)))
         (self.segment,) = ax.plot([], [], color="black", linewidth=2)
         self.rays = [ax.plot([], [], color="0.6", linewidth=0.8)[0] for _ in range(2)]
         self.fan = LineCollection([], colors=OTHERS[0]["color"], linewidths=0.6, alpha=0.8)
@@ -127,6 +131,15 @@ class LineView(Plot):
             "c": np.array([c, -d]),
         }
 
+        # Lengyel's line a x + b z = c through A and B: (a, b) = (z2 - z1, x1 - x2).
+        self.c = float(A[0] * B[1] - B[0] * A[1])
+        if np.array_equal(A, B):
+            self.carrier.set_data([], [])
+        else:
+            k = np.array([-100.0, 100.0])
+            line = A + k[:, None] * (B - A) / np.hypot(*(B - A))
+            self.carrier.set_data(-line[:, 1], line[:, 0])
+
         x_max = self.ax.get_ylim()[1]
         self.plane.set_data([d, d], [-x_max, x_max])
         self.segment.set_data([w1, w2], [A[0], B[0]])
@@ -155,6 +168,7 @@ class LineView(Plot):
     def dynamic(self) -> list:
         return [
             self.plane,
+            self.carrier,
             self.segment,
             *self.rays,
             self.fan,

@@ -15,17 +15,26 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import ClassVar
 
+import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.figure import Figure, SubFigure
 
-from interp import lerp
+from interp import depth, lerp, mistakes
 from interp.plots._base import Plot
 from interp.plots.attributes import ClipVertexMistake, ColourTriangle, MistakesAlongALine
 from interp.plots.checker import CheckerPanels, UVImages
 from interp.plots.depth import DepthAcross, DepthPrecision
-from interp.plots.gpu import LAB_CAMERA, ApproximationLab, ClippingView
+from interp.plots.gpu import (
+    LAB_CAMERA,
+    SHADER_OUTPUTS,
+    ApproximationLab,
+    ClippingView,
+    ShaderView,
+)
 from interp.plots.line import GapPlot, ImageStrip, LineView, STCurve, STFamily
 from interp.plots.params import Param, camera_from, camera_params, table
+from interp.plots.planes import PANEL_QUANTITIES, PlanePanels, verdict
+from interp.scenes import LESSON_SIZE, ground_plane
 
 #: Print widths that fit a column of an A4 or Letter page (6.3 in of text between 1 in margins).
 NARROW, WIDE = 3.3, 6.3
@@ -124,6 +133,12 @@ def _points(p: dict) -> dict[str, object]:
     return {"A": (p["A_x"], -p["A_w"]), "B": (p["B_x"], -p["B_w"]), "d": p["d"]}
 
 
+def _in_line(view: LineView) -> bool:
+    """Whether A, B and the eye are in line, so that the image of AB is one point (c = 0 in
+    Lengyel's ``a x + b z = c``)."""
+    return bool(view.points["a"][0] == view.points["b"][0])
+
+
 def midpoint_title(view: LineView) -> str:
     """Where the middle M of AB shows on the image, in words true in every state.
 
@@ -136,8 +151,7 @@ def midpoint_title(view: LineView) -> str:
     the middle of the image (A and B equally deep)
     """
     w1, w2 = -view.points["A"][1], -view.points["B"][1]
-    a, b = view.points["a"][0], view.points["b"][0]
-    if a == b:
+    if _in_line(view):
         return "A, B and the eye are in line:\nthe image is one point, and s means nothing"
     s_m = lerp.s_from_t(0.5, w1, w2)
     where = f"M, the middle of AB, shows at s = {s_m:.3f}:"
@@ -148,6 +162,24 @@ def midpoint_title(view: LineView) -> str:
     return f"{where}\nnot the middle of the image (s = 0.5)"
 
 
+def midpoint_readout(view: LineView) -> str:
+    """:func:`midpoint_title` as one or two plain sentences."""
+    w1, w2 = -view.points["A"][1], -view.points["B"][1]
+    if _in_line(view):
+        return (
+            "A, B and the eye are in line (the line through A and B passes through the eye: "
+            "c = 0 in Lengyel's a x + b z = c), so the image of AB is a single point and the "
+            "screen parameter s is undefined."
+        )
+    s_m = lerp.s_from_t(0.5, w1, w2)
+    where = f"M, the middle of AB, shows at s = {s_m:.3f} of the image"
+    if w1 == w2:
+        return f"{where}, its middle: A and B are equally deep."
+    if round(s_m, 3) == 0.5:
+        return f"{where}, nearly its middle: A and B are nearly equally deep."
+    return f"{where}, not at its middle (s = 0.5)."
+
+
 class TheProblem(LessonFigure):
     name = "the-problem"
     lesson = 1
@@ -156,7 +188,8 @@ class TheProblem(LessonFigure):
     caption = (
         "The eye (left) sees segment AB on the image plane (grey). M, the middle of AB, shows "
         "at m; the middle of the image, c, shows C. They coincide only when A and B are equally "
-        "deep. (Lesson 1)"
+        "deep. The faint dashed line is the whole line through A and B: when it passes through "
+        "the eye, the image is a single point. (Lesson 1)"
     )
     size = (6.5, 4.5)
     print_size = (NARROW, 3.0)
@@ -168,6 +201,9 @@ class TheProblem(LessonFigure):
     def redraw(self) -> None:
         self.view.update(**_points(self.params))
         self.view.ax.set_title(midpoint_title(self.view))
+
+    def readout(self) -> str:
+        return midpoint_readout(self.view)
 
 
 class ProjectingALine(LessonFigure):
@@ -196,8 +232,31 @@ class ProjectingALine(LessonFigure):
         self.view.update(**_points(p), samples=p["samples"])
         self.strip.update(w1=p["A_w"], w2=p["B_w"])
         self.curve.update(w1=p["A_w"], w2=p["B_w"], samples=p["samples"])
-        s_m = lerp.s_from_t(0.5, p["A_w"], p["B_w"])
-        self.view.ax.set_title(f"the midpoint of AB shows at s = {s_m:.3f}")
+        if _in_line(self.view):
+            self.view.ax.set_title("A, B and the eye in line: no s")
+        else:
+            s_m = lerp.s_from_t(0.5, p["A_w"], p["B_w"])
+            self.view.ax.set_title(f"the midpoint of AB shows at s = {s_m:.3f}")
+
+    def near_half(self) -> int:
+        """How many of the equally spaced pixels show the half of AB nearer A (t < 1/2)."""
+        n = int(self.params["samples"])
+        s = (np.arange(n) + 0.5) / n
+        return int(np.sum(lerp.t_from_s(s, self.params["A_w"], self.params["B_w"]) < 0.5))
+
+    def readout(self) -> str:
+        n = int(self.params["samples"])
+        pixels = f"{self.near_half()} of the {n} equally spaced pixel{'s' * (n != 1)}"
+        if _in_line(self.view):
+            return (
+                "A, B and the eye are in line: every pixel ray that meets AB meets it end-on, "
+                "and the image is one point."
+            )
+        s_m = lerp.s_from_t(0.5, self.params["A_w"], self.params["B_w"])
+        return (
+            f"The middle of AB shows at s = {s_m:.3f} of the image: {pixels} show the half "
+            "of AB nearer A."
+        )
 
 
 class STMapping(LessonFigure):
@@ -228,6 +287,16 @@ class STMapping(LessonFigure):
         self.family.update(ratio=w2 / w1)
         self.gap.update(w1=w1, w2=w2)
 
+    def readout(self) -> str:
+        w1, w2 = self.params["w1"], self.params["w2"]
+        if w1 == w2:
+            return "With w1 = w2 the curve is the diagonal t = s: the gap |t - s| is 0 everywhere."
+        (s_star, gap), (s_sample, gap_sample) = self.gap.derived, self.gap.measured
+        return (
+            f"For w2/w1 = {w2 / w1:.3g} the gap |t - s| peaks at s* = {s_star:.3f}, where it is "
+            f"{gap:.3f}; the largest of 2001 samples is {gap_sample:.3f}, at s = {s_sample:.3f}."
+        )
+
 
 # ---------------------------------------------------------------------------- lessons 4-5
 
@@ -239,9 +308,11 @@ class Depth(LessonFigure):
     description = "w, 1/w and NDC z along the image; the smallest depth step a buffer resolves"
     caption = (
         "Left: along the image of a segment from depth 1 to depth 8, each rescaled to [0, 1], "
-        "the view depth w bends while 1/w and NDC z are straight. Right: the smallest change of "
-        "depth a float32 depth buffer notices, against depth, for near planes 0.01, 0.1 and 1 "
-        "with far = 100, on log scales. (Lesson 4)"
+        "the view depth w bends while 1/w and NDC z are straight (a part beyond the near or far "
+        "plane is shaded: clipping removes it). Right: the smallest change of depth a depth "
+        "buffer notices, against depth, for near planes 0.01, 0.1 and 1 with far = 100, on log "
+        "scales: a float32 buffer storing window z, a 24-bit fixed-point one, or either storing "
+        "reversed depth (reversed Z). (Lesson 4)"
     )
     size = (9.5, 4.0)
     print_size = (WIDE, 2.8)
@@ -250,7 +321,7 @@ class Depth(LessonFigure):
         w2=Param(8.0, 0.2, 50.0, 0.1, "w2"),
         near=Param(0.1, 0.001, 1.0, 0.05, "near plane", log=True, fmt=".3f"),
         far=Param(100.0, 2.0, 1000.0, 1.0, "far plane"),
-        buffer=Param("float32", options=("float32", "fixed24"), label="depth buffer"),
+        buffer=Param("float32", options=depth.DEPTH_BUFFERS, label="depth buffer"),
     )
 
     def build(self, figure: Figure | SubFigure) -> None:
@@ -263,6 +334,23 @@ class Depth(LessonFigure):
         self.across.update(w1=p["w1"], w2=p["w2"], near=p["near"], far=p["far"])
         self.precision.update(near=p["near"], far=p["far"], buffer=p["buffer"])
 
+    def readout(self) -> str:
+        p = self.params
+        near, far, buffer = p["near"], p["far"], str(p["buffer"])
+        clipped = ""
+        for low, high in self.across.clipped:
+            if (low, high) == (0.0, 1.0):
+                clipped = " All of the segment lies beyond the near or far plane: it is clipped."
+            else:
+                clipped += f" The part from s = {low:.2f} to {high:.2f} is clipped away."
+        steps = depth.depth_step([1.0, 0.9 * far], near, far, buffer)
+        return (
+            "Along the image, 1/w and NDC z are straight and w is not."
+            f"{clipped} A {buffer} depth buffer with near = {near:.3g} and far = {far:g} "
+            f"resolves depth steps of {steps[0]:.3g} at w = 1 and {steps[1]:.3g} at w = "
+            f"{0.9 * far:g}."
+        )
+
 
 class Attributes(LessonFigure):
     name = "attributes"
@@ -273,18 +361,19 @@ class Attributes(LessonFigure):
         "Left: an attribute from 0 at A (depth 1) to 1 at B (depth 6) along the image: the "
         "right answer (solid) beside affine interpolation, dividing by the depth buffer's window "
         "z instead of w, and dividing too early. Right: a segment from A to a point B behind the "
-        "camera, clipped at the near plane at C: with C's own attribute (solid) the visible part "
-        "is right; keeping B's attribute (dotted) makes all of it wrong. (Lesson 5)"
+        "near plane (w <= 0), clipped at the near plane at C: with C's own attribute, a1 + "
+        "t_C (a2 - a1) where t_C = (w1 - near) / (w1 - w_B), the visible part is right (solid); "
+        "keeping B's attribute (dotted) makes all of it wrong. (Lesson 5)"
     )
     size = (9.5, 4.0)
     print_size = (WIDE, 2.8)
     PARAMS = table(
         a1=Param(0.0, -1.0, 1.0, 0.01, "a at A"),
         a2=Param(1.0, -1.0, 1.0, 0.01, "a at B"),
-        w1=Param(1.0, 0.5, 20.0, 0.1, "w1"),
-        w2=Param(6.0, 0.5, 20.0, 0.1, "w2"),
+        w1=Param(1.0, 1.0, 20.0, 0.1, "w1"),
+        w2=Param(6.0, 1.0, 20.0, 0.1, "w2"),
         behind=Param(-2.0, -10.0, 0.0, 0.1, "B's w when clipped"),
-        near=Param(0.5, 0.1, 0.5, 0.01, "near plane"),
+        near=Param(0.5, 0.1, 0.95, 0.01, "near plane"),
     )
 
     def build(self, figure: Figure | SubFigure) -> None:
@@ -297,6 +386,30 @@ class Attributes(LessonFigure):
         a, w = {"a1": p["a1"], "a2": p["a2"]}, {"w1": p["w1"], "near": p["near"]}
         self.line.update(**a, **w, w2=p["w2"])
         self.clip.update(**a, **w, w2=p["behind"])
+
+    def readout(self) -> str:
+        p = self.params
+        at_half = {name: line.get_ydata()[50] for name, line in self.line.lines.items()}
+        a_c = mistakes.clip_vertex_attribute(p["a1"], p["a2"], p["w1"], p["behind"], p["near"])
+        return (
+            f"At the middle of the image (s = 0.5) the right attribute is "
+            f"{at_half['perspective-correct']:.3f}; affine interpolation gives "
+            f"{at_half['affine']:.3f}, dividing by window z {at_half['divided by window z']:.3f} "
+            f"and dividing too early {at_half['divided too early']:.3f}. Clipped at the near "
+            f"plane, C must get {a_c:.3f}, not B's {p['a2']:.3f}."
+        )
+
+
+def _image_difference(images: list[ColourTriangle]) -> tuple[float, int] | None:
+    """The largest colour difference between two drawings of the same quad, and the image row
+    where it is; None if nothing is drawn."""
+    first, second = (np.asarray(image.image.get_array()) for image in images)
+    drawn = np.any(first != 1.0, axis=2) | np.any(second != 1.0, axis=2)
+    if not drawn.any():
+        return None
+    difference = np.where(drawn, np.abs(first - second).max(axis=2), -1.0)
+    row = int(np.unravel_index(np.argmax(difference), difference.shape)[0])
+    return float(difference.max()), row
 
 
 class ColourQuad(LessonFigure):
@@ -325,8 +438,20 @@ class ColourQuad(LessonFigure):
         for image in self.images:
             image.update(camera=camera)
 
+    def readout(self) -> str:
+        found = _image_difference(self.images)
+        if found is None:
+            return "Nothing is drawn: the quad is out of view."
+        largest, row = found
+        if largest < 0.005:
+            return "Affine and perspective-correct colours agree (they differ by less than 0.005)."
+        return (
+            f"Affine and perspective-correct colours differ by up to {largest:.2f} (on a scale "
+            f"of 0 to 1 per channel), at image row {row}."
+        )
 
-# ---------------------------------------------------------------------------- lessons 6-7
+
+# ---------------------------------------------------------------------------- lessons 6-8
 
 #: Image sizes the resolution control offers, (width, height).
 RESOLUTIONS = {
@@ -344,13 +469,14 @@ class Checkerboards(LessonFigure):
     description = "affine beside perspective-correct texture mapping, and the error in texels"
     caption = (
         "A checkerboard quad drawn affinely (left) and perspective-correctly (middle); right, "
-        "how far apart their texture coordinates are, in texels. The affine lines bend, and "
-        "bend differently in the quad's two triangles. (Lesson 6)"
+        "how far apart their texture coordinates are, in texels (one texel is one check), on a "
+        "colour scale that ends just above the largest error; blank where nothing is drawn. "
+        "The affine lines bend, and bend differently in the quad's two triangles. (Lesson 6)"
     )
     size = (9.5, 2.9)
     print_size = (WIDE, 1.9)
     PARAMS = table(
-        **camera_params(),
+        **camera_params(roll=True),
         frequency=Param(8.0, 1.0, 64.0, 1.0, "checks per side", fmt=".0f"),
         resolution=Param("320 x 240", options=tuple(RESOLUTIONS), label="resolution"),
         mode=Param("affine", options=("affine", "subdivided"), label="left panel"),
@@ -376,6 +502,17 @@ class Checkerboards(LessonFigure):
             filtered=p["filtered"] == "filtered",
         )
 
+    def readout(self) -> str:
+        views = self.panels.views
+        if not views.covered.any():
+            return "Nothing is drawn: the quad is out of view."
+        error = np.where(views.covered, views.error, -1.0)
+        row = int(np.unravel_index(np.argmax(error), error.shape)[0])
+        how = "affine" if views.mode == "affine" else f"exact every {self.params['span']} px"
+        if error.max() < 0.005:
+            return f"Largest error {error.max():.1g} texels ({how}): nothing to see, rounding."
+        return f"Largest error {error.max():.2f} texels ({how}), at image row {row}."
+
 
 class UVImagesFigure(LessonFigure):
     name = "uv-images"
@@ -383,8 +520,10 @@ class UVImagesFigure(LessonFigure):
     title = "u and v as images"
     description = "the texture coordinates u and v across the ground quad, as images"
     caption = (
-        "The perspective-correct texture coordinates u (left) and v (right) across the ground "
-        "quad, from 0 (dark) to 1 (light); where nothing is drawn is blank. (Lesson 6)"
+        "The texture coordinates u (left) and v (right) across the ground quad, from 0 (dark) "
+        "to 1 (light), with a contour line every 0.1; where nothing is drawn is blank. "
+        "Perspective-correct, the contour lines crowd towards the horizon; affine, they are "
+        "evenly spaced and parallel within each triangle and bend at the diagonal. (Lesson 6)"
     )
     size = (9.0, 3.4)
     print_size = (WIDE, 2.4)
@@ -399,9 +538,56 @@ class UVImagesFigure(LessonFigure):
     def redraw(self) -> None:
         self.uv.update(camera=camera_from(self.params), mode=self.params["mode"])
 
+    def readout(self) -> str:
+        if not self.uv.views.covered.any():
+            return "Nothing is drawn: the quad is out of view."
+        du, dv = self.uv.largest_difference()
+        return (
+            f"Shown: {self.params['mode']} u and v. Affine interpolation is off from the "
+            f"perspective-correct values by up to {du:.3f} in u and {dv:.3f} in v here."
+        )
 
-#: A camera that frames the whole first triangle of the lesson quad, each corner at its own depth.
-BARYCENTRIC_CAMERA = {"height": 2.2, "pitch": 32.0, "yaw": 20.0, "distance": 4.2}
+
+class LinearOnScreen(LessonFigure):
+    name = "linear-on-screen"
+    lesson = 7
+    title = "What is a plane over the screen"
+    description = "w, 1/w, u, u/w and NDC z over the ground quad, ray cast, with contour lines"
+    caption = (
+        "Two quantities over the ground quad, ray cast through every pixel centre (not "
+        "interpolated), with ten contour lines evenly spaced in value. 1/w, u/w and NDC z are "
+        "planes over the screen (straight, parallel, evenly spaced contours); w and u are not. "
+        "The title gives the largest distance from the best-fitting plane on either triangle. "
+        "(Lesson 7)"
+    )
+    size = (9.0, 3.6)
+    print_size = (WIDE, 2.4)
+    PARAMS = table(
+        **camera_params(),
+        left=Param("w", options=PANEL_QUANTITIES, label="left panel"),
+        right=Param("1/w", options=PANEL_QUANTITIES, label="right panel"),
+    )
+
+    def build(self, figure: Figure | SubFigure) -> None:
+        self.panels = PlanePanels(figure.subplots(1, 2))
+
+    def redraw(self) -> None:
+        p = self.params
+        self.panels.update(camera=camera_from(p), left=p["left"], right=p["right"])
+
+    def readout(self) -> str:
+        if not self.panels.truth.covered.any():
+            return "Nothing is drawn: the quad is out of view."
+        names = (self.params["left"], self.params["right"])
+        fits = self.panels.fits
+        said = [f"{name} {verdict(fit)}" for name, fit in zip(names, fits, strict=True)]
+        return "Over the screen, " + "; ".join(said) + "."
+
+
+#: A camera that frames the whole first triangle of the lesson quad, its corners at depths of
+#: about 0.4, 2.6 and 3.1 (a ratio of 7.5), so that screen-space and clip-space weights differ
+#: clearly.
+BARYCENTRIC_CAMERA = {"height": 0.5, "pitch": 30.0, "yaw": 40.0, "distance": 3.0, "fovy": 90.0}
 
 
 class Barycentrics(ColourQuad):
@@ -412,21 +598,100 @@ class Barycentrics(ColourQuad):
     caption = (
         "One triangle with red, green and blue corners, so its colour is its barycentric "
         "coordinates: screen-space (noperspective, left) and clip-space (smooth, OpenGL 4.6 eq. "
-        "14.9, right). (Lesson 7)"
+        "14.9, right). Its corners are at very different depths, so the two differ clearly. "
+        "(Lesson 7)"
     )
     PARAMS = table(**camera_params(**BARYCENTRIC_CAMERA))
     whole_quad = False
 
+    def readout(self) -> str:
+        found = _image_difference(self.images)
+        camera = camera_from(self.params).fitted(self.images[0].width, self.images[0].height)
+        scene = ground_plane(camera, LESSON_SIZE, quads=1)
+        w = scene.clip[scene.triangles[0], 3]
+        depths = ", ".join(f"{x:.2f}" for x in w)
+        if found is None:
+            return f"Nothing is drawn: the triangle is out of view (corner depths w = {depths})."
+        largest, row = found
+        if largest < 0.005:
+            return (
+                "The colour is the weights: clip-space (smooth) and screen-space "
+                "(noperspective) weights agree to within 0.005, because the corners' depths "
+                f"are w = {depths}."
+            )
+        return (
+            f"The colour is the weights: clip-space (smooth) and screen-space (noperspective) "
+            f"weights differ by up to {largest:.2f}, at image row {row}; the corners' depths "
+            f"are w = {depths}."
+        )
+
+
+class Shader(LessonFigure):
+    name = "shader"
+    lesson = 8
+    title = "The shader's view"
+    description = "smooth beside noperspective, flat, or smooth after dividing in the vertex shader"
+    caption = (
+        "A colour per corner across the ground quad, as the fragment shader receives it: smooth "
+        "(left) beside, on the right, a vertex shader that divided by w itself and wrote w = 1: "
+        "smooth then has nothing to correct with and gives noperspective's colours. The right "
+        "panel can also show noperspective, or flat (each triangle the colour of its provoking "
+        "vertex, the last). (Lesson 8)"
+    )
+    size = (9.0, 3.6)
+    print_size = (WIDE, 2.4)
+    PARAMS = table(
+        **camera_params(),
+        output=Param(
+            "smooth, divided by w in the vertex shader",
+            options=tuple(SHADER_OUTPUTS),
+            label="right panel",
+        ),
+    )
+
+    def build(self, figure: Figure | SubFigure) -> None:
+        self.view = ShaderView(figure.subplots(1, 2))
+
+    def redraw(self) -> None:
+        self.view.update(camera=camera_from(self.params), output=self.params["output"])
+
+    def readout(self) -> str:
+        output = str(self.params["output"])
+        covered = self.view.values[output][1]
+        if not covered.any():
+            return "Nothing is drawn: the quad is out of view."
+        from_smooth = self.view.difference_from("smooth")
+        if output == "flat":
+            return (
+                "Flat: every pixel of a triangle takes the colour of its provoking vertex (the "
+                f"last); it differs from smooth by up to {from_smooth:.2f}."
+            )
+        if output == "noperspective":
+            return f"Noperspective differs from smooth by up to {from_smooth:.2f} here."
+        if self.view.behind == 0:
+            return (
+                "Dividing by w in the vertex shader leaves every w = 1, so smooth has nothing to "
+                "correct with: the picture is noperspective's, up to "
+                f"{from_smooth:.2f} away from smooth."
+            )
+        corners = "corner is" if self.view.behind == 1 else "corners are"
+        return (
+            f"{self.view.behind} {corners} behind the camera (w < 0): divided before clipping "
+            "could cut them off, they are mirrored through the eye, and the picture covers "
+            f"{int(covered.sum())} pixels where smooth covers "
+            f"{int(self.view.values['smooth'][1].sum())}."
+        )
+
 
 class Clipping(LessonFigure):
     name = "clipping"
-    lesson = 7
+    lesson = 8
     title = "Near-plane clipping"
     description = "the ground plane from just above it, with the outline of every clipped triangle"
     caption = (
         "With the camera just above the ground and over it, some triangles reach behind it; "
         "clipping in clip space cuts them at the near plane into the outlined pieces, and the "
-        "image stays correct. (Lesson 7)"
+        "image stays correct. (Lesson 8)"
     )
     size = (6.5, 5.0)
     print_size = (NARROW, 2.6)
@@ -438,16 +703,28 @@ class Clipping(LessonFigure):
     def redraw(self) -> None:
         self.view.update(camera=camera_from(self.params), quads=self.params["quads"])
 
+    def readout(self) -> str:
+        p = self.view.params
+        camera = p["camera"].fitted(int(p["width"]), int(p["height"]))
+        scene = ground_plane(camera, LESSON_SIZE, quads=int(p["quads"]))
+        behind = int(np.sum(scene.clip[:, 3] <= 0))
+        counts = self.view.counts
+        return (
+            f"{counts['visible triangles']} triangles in view became {counts['pieces']} after "
+            f"clipping; {behind} of the ground's {len(scene.clip)} vertices are behind the camera "
+            "(w <= 0)."
+        )
+
 
 class Approximations(LessonFigure):
     name = "approximations"
-    lesson = 7
+    lesson = 8
     title = "The approximation lab"
     description = "mean texture error against divides per pixel: Quake's spans and tessellation"
     caption = (
         "Mean texture error against divides per pixel, on log scales, for a rolled camera: "
         "exact every N pixels along a row (Quake's spans) against cutting the quad into n x n "
-        "affine quads (PlayStation era). (Lesson 7)"
+        "affine quads (PlayStation era). (Lesson 8)"
     )
     size = (6.5, 4.6)
     print_size = (NARROW, 3.0)
@@ -458,6 +735,18 @@ class Approximations(LessonFigure):
 
     def redraw(self) -> None:
         self.lab.update(camera=camera_from(self.params, LAB_CAMERA))
+
+    def readout(self) -> str:
+        spans, tess = self.lab.costs["spans"], self.lab.costs["tessellation"]
+        span16 = int(np.flatnonzero(spans.setting == 16)[0])
+        quads8 = int(np.flatnonzero(tess.setting == 8)[0])
+        if spans.divides_per_pixel[span16] == 0:
+            return "Nothing is drawn: the plane is out of view."
+        return (
+            f"Spans of 16 pixels: mean error {spans.mean_error[span16]:.3g} texels at "
+            f"{spans.divides_per_pixel[span16]:.3f} divides per pixel; 8 x 8 affine quads: "
+            f"{tess.mean_error[quads8]:.3g} texels at {tess.divides_per_pixel[quads8]:.3f}."
+        )
 
 
 #: Every lesson figure, by name, in lesson order.
@@ -472,7 +761,9 @@ FIGURES: dict[str, type[LessonFigure]] = {
         ColourQuad,
         Checkerboards,
         UVImagesFigure,
+        LinearOnScreen,
         Barycentrics,
+        Shader,
         Clipping,
         Approximations,
     )

@@ -1,0 +1,90 @@
+"""The figures issue 10 added, live: lessons 7 and 8 show them with ``apps.App(registry.X)``
+(interp.apps has no function for them yet, so tests/test_live.py and tests/test_apps.py, which go
+through ``apps.ALL``, do not reach them). Blitted frames equal full redraws, and any control
+values show a clean figure."""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from matplotlib.collections import LineCollection
+
+from interp.apps import App
+from interp.apps._live import Blitter
+from interp.plots import registry
+
+NEW = [registry.LinearOnScreen, registry.Shader]
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    yield
+    plt.close("all")
+
+
+def shown_arrays(figure):
+    for ax in figure.axes:
+        for line in ax.lines:
+            yield np.asarray(line.get_xydata(), float)
+        for image in ax.images:
+            data = image.get_array()
+            yield np.ma.compressed(data) if np.ma.isMaskedArray(data) else np.asarray(data)
+        for collection in ax.collections:
+            if isinstance(collection, LineCollection):
+                for segment in collection.get_segments():
+                    yield np.asarray(segment, float)
+
+
+@pytest.mark.parametrize("figure_class", NEW, ids=lambda c: c.name)
+def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(figure_class):
+    app = App(figure_class)
+    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter.draw()
+    steps = [{"pitch": 19.0}, {"pitch": 17.0}, {"yaw": 12.0}]
+    choice = "left" if "left" in app.controls else "output"
+    steps.append({choice: app.controls[choice].options[-1]})
+    for step in steps:
+        app.set(**step)
+        blitter.draw()
+        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
+        app.figure.canvas.draw()
+        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
+    assert blitter.blits >= 1
+
+
+def values_of(control):
+    if isinstance(control, widgets.Dropdown):
+        return st.sampled_from(list(control.options))
+    if isinstance(control, widgets.FloatLogSlider):
+        return st.floats(control.min, control.max).map(lambda e: 10.0**e)
+    return st.floats(control.min, control.max)
+
+
+@pytest.mark.parametrize("figure_class", NEW, ids=lambda c: c.name)
+def test_any_control_values_show_a_clean_figure_and_a_readout(figure_class):
+    app = App(figure_class)
+
+    @settings(max_examples=25, deadline=None)
+    @given(st.fixed_dictionaries({k: values_of(c) for k, c in app.controls.items()}))
+    def fuzz(values):
+        app.set(**values)
+        for array in shown_arrays(app.figure):
+            assert np.all(np.isfinite(array))
+        assert app.plot.readout()
+
+    fuzz()
+    for camera in (
+        {"height": 0.0, "pitch": 0.0},
+        {"height": 0.001, "pitch": -10.0, "near": 0.001},
+        {"height": -0.5, "pitch": 30.0},
+        {"height": 4.0, "pitch": 90.0, "distance": 0.0},
+        {"height": 0.5, "distance": 0.0, "pitch": 5.0, "near": 0.001},
+    ):
+        app.set(**camera)
+        for array in shown_arrays(app.figure):
+            assert np.all(np.isfinite(array))
+        assert app.plot.readout()
