@@ -25,7 +25,7 @@ import numpy as np
 
 from interp import _checks
 from interp.camera import Camera
-from interp.clipping import PLANES, ClippedTriangles, _clip_against, clip_triangles
+from interp.clipping import PLANES, _clip_against, _Soup, clip_triangles
 from interp.scenes import Scene
 
 #: The image's corners in NDC (x, y), counter-clockwise from the bottom left.
@@ -245,24 +245,23 @@ def clipped_in_world(scene: Scene) -> ClippedScene:
         raise TypeError(f"scene must be an interp.Scene, got {type(scene).__name__}")
     camera = scene.camera
     pieces = clip_triangles(scene.clip, scene.uv, scene.triangles)
-    whole = ClippedTriangles(
-        scene.clip[scene.triangles],
-        scene.uv[scene.triangles],
-        scene.uv[scene.triangles],
-        np.arange(len(scene.triangles)),
-    )
-    before_near = _clip_against(whole, -PLANES[0])  # the other side of the near plane: z < -w
-    counts = np.cumsum([0, 3 * len(pieces), 3 * len(before_near)])
+    # The other side of the near plane (z < -w), with clipping's own one-plane pass: positions
+    # only, no attributes.
+    whole = _Soup(scene.clip[scene.triangles], np.arange(len(scene.triangles)))
+    before_near = _clip_against(whole, -PLANES[0]).vertices[:, :, :4]
+    counts = np.cumsum([0, 3 * len(pieces.clip), 3 * len(before_near)])
     world = clip_to_world(  # one inverse for both
-        camera, np.concatenate([pieces.clip.reshape(-1, 4), before_near.clip.reshape(-1, 4)])
+        camera, np.concatenate([pieces.clip.reshape(-1, 4), before_near.reshape(-1, 4)])
     )
     visible = world[: counts[1]].reshape(-1, 3, 3)
     cut_off = world[counts[1] :].reshape(-1, 3, 3)
 
-    # Clipping keeps an input vertex bit for bit; any other vertex is new. Pieces of no area
-    # (a plane through a vertex) are left out, as the rasterizer leaves them out.
-    original = scene.clip[scene.triangles[pieces.source]]  # (T, 3, 4) the input triangles
-    is_new = ~np.any(np.all(pieces.clip[:, :, None, :] == original[:, None, :, :], axis=3), axis=2)
+    # Clipping keeps an input vertex bit for bit, but for a power of two (it scales each
+    # triangle so); any other vertex is new. Pieces of no area (a plane through a vertex) are
+    # left out, as the rasterizer leaves them out.
+    original = _unit(scene.clip[scene.triangles[pieces.source]])  # (T, 3, 4) the input triangles
+    same = np.all(_unit(pieces.clip)[:, :, None, :] == original[:, None, :, :], axis=3)
+    is_new = ~np.any(same, axis=2)
     area = np.linalg.norm(
         np.cross(visible[:, 1] - visible[:, 0], visible[:, 2] - visible[:, 0]), axis=1
     )
@@ -277,6 +276,13 @@ def clipped_in_world(scene: Scene) -> ClippedScene:
         new_vertices=new,
         in_view=len(np.unique(pieces.source[kept])),
     )
+
+
+def _unit(points: np.ndarray) -> np.ndarray:
+    """Homogeneous points (..., 4) each scaled by a power of two to a largest coordinate in
+    [1/2, 1): exact, so two points equal up to such a scale become equal bit for bit."""
+    _, exponent = np.frexp(np.abs(points).max(axis=-1, keepdims=True))
+    return np.ldexp(points, -exponent)
 
 
 def reach_of(camera: Camera, points: np.ndarray, default: float) -> float:

@@ -281,11 +281,12 @@ class TexturedRenderer(Renderer):
     ) -> None:
         import moderngl
 
+        mode = _checks.choice(mode, "mode", ("perspective", "affine"))
         super().__init__(width, height, mode)
-        qualifier = "smooth" if mode == "perspective" else "noperspective"
+        qualifier = _QUALIFIERS[mode]
         self.program.release()
         self.program = self.ctx.program(
-            vertex_shader=_VERTEX.format(qualifier=qualifier),
+            vertex_shader=_VERTEX.format(qualifier=qualifier, position=_POSITIONS[False]),
             fragment_shader=_TEXTURED_FRAGMENT.format(qualifier=qualifier),
         )
         base = np.ascontiguousarray(levels[0], dtype="f4")

@@ -82,3 +82,19 @@ def test_without_an_event_loop_each_change_draws_at_once():
     coalescer.request()
     coalescer.request()
     assert shown == [0, 1]
+
+
+def test_an_orbit_of_3d_axes_redraws_everything_once():
+    # The mouse turns a 3D view: its panes and ticks in the saved background are out of date.
+    figure = plt.figure()
+    ax = figure.add_subplot(projection="3d")
+    (line,) = ax.plot([0, 1], [0, 1], [0, 1])
+    blitter = Blitter(figure, [line])
+    blitter.draw()
+    ax.view_init(elev=10.0, azim=75.0)  # what dragging with the mouse does
+    line.set_data_3d([0, 1], [1, 0], [0, 1])
+    blitter.draw()
+    assert blitter.full_draws == 2
+    blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
+    figure.canvas.draw()
+    np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))

@@ -250,12 +250,6 @@ def test_a_camera_step_blits_and_a_new_ground_redraws_everything():
     assert blitter.full_draws == 2
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="interp.apps._live.static_key does not yet include a 3D axes' view angles "
-    "(drafts/live_static_key_3d.patch adds them); until it does, a slider step after an "
-    "orbit restores a background drawn from the old viewpoint",
-)
 def test_a_slider_step_after_an_orbit_shows_the_new_viewpoint():
     app = App(OutsideViewFigure)
     blitter = Blitter(app.figure, app.plot.dynamic)
