@@ -54,19 +54,13 @@ def step_times(figure_class: type, repeat: int, control: str = "pitch") -> dict[
 
 def lines(repeat: int) -> list[str]:
     from interp.plots import registry
-    from interp.plots.lesson_figures_11 import (
-        CheckerboardsOutside,
-        ClippingOutside,
-        OutsideViewFigure,
-        TextureFiltering,
-    )
 
     out = []
     pairs: list[tuple[str, type, type | None]] = [
-        ("checkerboards + outside view", CheckerboardsOutside, registry.Checkerboards),
-        ("clipping + outside view", ClippingOutside, registry.Clipping),
-        ("outside view alone", OutsideViewFigure, None),
-        ("texture filtering", TextureFiltering, None),
+        ("checkerboards + outside view", registry.CheckerboardsOutside, registry.Checkerboards),
+        ("clipping + outside view", registry.ClippingOutside, registry.Clipping),
+        ("outside view alone", registry.OutsideViewFigure, None),
+        ("texture filtering", registry.TextureFiltering, None),
     ]
     for label, new, old in pairs:
         t = step_times(new, repeat)

@@ -288,14 +288,10 @@ def control_values(control):
 @pytest.mark.parametrize("name", sorted(apps.ALL))
 def test_any_slider_values_show_clean_figures(name):
     app = apps.ALL[name]()
-    if name == "checkerboards":
+    if "resolution" in app.controls:
         app.set(resolution="160 x 120")  # keep the fuzz quick; resolutions are tested above
     strategy = st.fixed_dictionaries(
-        {
-            key: control_values(c)
-            for key, c in app.controls.items()
-            if not (name == "checkerboards" and key == "resolution")
-        }
+        {key: control_values(c) for key, c in app.controls.items() if key != "resolution"}
     )
     extremes = [
         {
@@ -336,7 +332,19 @@ def test_resolutions_offered_are_valid():
         assert 0 < width <= 4096 and 0 < height <= 4096
 
 
-@pytest.mark.parametrize("name", ["checkerboards", "clipping", "colour_quad", "uv_images"])
+@pytest.mark.parametrize(
+    "name",
+    [
+        "checkerboards",
+        "checkerboards_outside",
+        "clipping",
+        "clipping_outside",
+        "colour_quad",
+        "outside_view",
+        "texture_filtering",
+        "uv_images",
+    ],
+)
 @pytest.mark.parametrize(
     "camera",
     [

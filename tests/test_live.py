@@ -20,6 +20,7 @@ STEPS = {
     "depth": ("w2", 3.0),
     "attributes": ("w2", 1.3),
     "approximations": ("pitch", 0.5),  # small steps: the decades of its log axes stay
+    "mipmap_pyramid": ("frequency", ["8", "32", "4", "16"]),  # a dropdown: these in turn
 }
 
 
@@ -36,7 +37,10 @@ def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
     blitter = Blitter(app.figure, app.plot.dynamic)
     blitter.draw()
     for k in range(4):
-        app.set(**{key: app.controls[key].value + (step if k % 2 == 0 else -step / 2)})
+        if isinstance(step, list):
+            app.set(**{key: step[k]})
+        else:
+            app.set(**{key: app.controls[key].value + (step if k % 2 == 0 else -step / 2)})
         blitter.draw()
         blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
         app.figure.canvas.draw()

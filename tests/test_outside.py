@@ -14,15 +14,27 @@ from interp.apps._app import App
 from interp.apps._live import Blitter
 from interp.camera import Camera
 from interp.clipping import PLANES
-from interp.plots.lesson_figures_11 import (
-    FIGURES_11,
+from interp.plots.outside import VIEWS, OutsideView
+from interp.plots.registry import (
+    FIGURES,
     CheckerboardsOutside,
     ClippingOutside,
     OutsideViewFigure,
 )
-from interp.plots.outside import VIEWS, OutsideView
 from interp.raster import fragments
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
+
+#: The figures issue 11 added, by name.
+FIGURES_11 = {
+    name: FIGURES[name]
+    for name in (
+        "outside-view",
+        "checkerboards-outside",
+        "texture-filtering",
+        "mipmap-pyramid",
+        "clipping-outside",
+    )
+}
 
 CAMERAS = [
     LESSON_CAMERA,
