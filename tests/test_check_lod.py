@@ -1,5 +1,5 @@
 # ruff: noqa: E501  (the messages are compared word for word)
-"""The texture-filtering checker, judged like those of tests/test_check.py: right answers in
+"""check.lod, the texture-filtering lesson's checker, judged like those of tests/test_check.py: right answers in
 several forms must pass; wrong ones must get exactly the message a teaching assistant would."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from interp import check_filtering
+from interp import check
 
 
 def _not_written(*args):
@@ -50,7 +50,7 @@ RIGHT = [
 
 @pytest.mark.parametrize(("label", "answer"), RIGHT, ids=[label for label, _ in RIGHT])
 def test_right_answers_pass(label, answer):
-    verdict = check_filtering.lod(answer)
+    verdict = check.lod(answer)
     assert verdict, (label, verdict)
     assert verdict.message == (
         "lod: right on all 27 cases, among them magnified (λ < 0), negative derivatives, the "
@@ -150,11 +150,11 @@ WRONG = {
 @pytest.mark.parametrize("label", WRONG)
 def test_wrong_answers_get_their_message(label):
     answer, message = WRONG[label]
-    assert repr(check_filtering.lod(answer)) == message
+    assert repr(check.lod(answer)) == message
 
 
 def test_every_known_mistake_is_reachable():
     # Each explanation the checker knows is given for some answer in the table above.
-    verdicts = {repr(check_filtering.lod(answer)) for answer, _ in WRONG.values()}
+    verdicts = {repr(check.lod(answer)) for answer, _ in WRONG.values()}
     assert sum(v.startswith("✗ that is") or v.startswith("✗ you") for v in verdicts) >= 12
     assert sum("λ is not rounded" in v for v in verdicts) == 2
