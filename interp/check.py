@@ -1429,15 +1429,15 @@ QUIZZES: dict[int, list[Question]] = {
     9: [
         _q(
             "One pixel's footprint in the texture is the parallelogram spanned by:",
-            "a",
+            "b",
             a=(
-                "(du/dx, dv/dx) and (du/dy, dv/dy).",
-                "one pixel step right moves (u, v) by the first, one step up by the second.",
-            ),
-            b=(
                 "(du/dx, du/dy) and (dv/dx, dv/dy).",
                 "that pairs the two derivatives of one coordinate; an edge is where one "
                 "screen step takes (u, v): (du/dx, dv/dx) along x, (du/dy, dv/dy) along y.",
+            ),
+            b=(
+                "(du/dx, dv/dx) and (du/dy, dv/dy).",
+                "one pixel step right moves (u, v) by the first, one step up by the second.",
             ),
             c=(
                 "(u, v) and (1/w, 1/w).",
@@ -1446,16 +1446,16 @@ QUIZZES: dict[int, list[Question]] = {
         ),
         _q(
             "Where the level of detail λ <= 0, the texture is:",
-            "a",
+            "c",
             a=(
-                "Magnified: a texel covers a pixel or more, and level 0 is read.",
-                "the footprint is at most one texel long.",
-            ),
-            b=(
                 "Minified: several texels fall in one pixel.",
                 "that is λ > 0, a footprint longer than one texel.",
             ),
-            c=("Not drawn.", "λ only chooses how the texture is read, not whether."),
+            b=("Not drawn.", "λ only chooses how the texture is read, not whether."),
+            c=(
+                "Magnified: a texel covers a pixel or more, and level 0 is read.",
+                "the footprint is at most one texel long.",
+            ),
         ),
         _q(
             "At λ = 2.3, trilinear filtering (GL_LINEAR_MIPMAP_LINEAR) reads:",
@@ -1476,15 +1476,15 @@ QUIZZES: dict[int, list[Question]] = {
         ),
         _q(
             "With affine interpolation, λ across one triangle is:",
-            "a",
+            "b",
             a=(
-                "Constant: u and v are linear on the screen, so their derivatives are constants.",
-                "so one mip level serves the whole triangle, near part and far part alike.",
-            ),
-            b=(
                 "The same as with perspective-correct interpolation.",
                 "perspective-correct derivatives change from pixel to pixel, as the footprints "
                 "do; affine ones cannot.",
+            ),
+            b=(
+                "Constant: u and v are linear on the screen, so their derivatives are constants.",
+                "so one mip level serves the whole triangle, near part and far part alike.",
             ),
             c=(
                 "Always 0.",
