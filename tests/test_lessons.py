@@ -31,10 +31,10 @@ LESSONS = sorted((ROOT / "lessons").glob("*.ipynb"))
 SOURCES = editions.sources(ROOT)
 NBGRADER = ROOT / ".venv-nbgrader" / "bin" / "nbgrader"
 
-#: The lessons: eight, and the cheat sheet (lesson 9, which has no "Try this" prompts).
-COUNT = 9
+#: The lessons: nine, and the cheat sheet (lesson 10, which has no "Try this" prompts).
+COUNT = 10
 #: "Try this" prompts across the lessons.
-PROMPTS = 36
+PROMPTS = 44
 
 
 def source(path: Path) -> nbformat.NotebookNode:
@@ -45,8 +45,8 @@ def bullets(markdown: str) -> int:
     return len(re.findall(r"^- ", markdown, re.M))
 
 
-def test_there_are_nine_lessons_from_nine_sources():
-    assert [p.name[:3] for p in LESSONS] == [f"0{k}_" for k in range(1, COUNT + 1)]
+def test_there_are_ten_lessons_from_ten_sources():
+    assert [p.name[:3] for p in LESSONS] == [f"{k:02d}_" for k in range(1, COUNT + 1)]
     assert [p.name for p in SOURCES] == [p.name for p in LESSONS]
 
 

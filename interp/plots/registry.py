@@ -659,7 +659,10 @@ class CheckerboardsOutside(Checkerboards):
     size = (9.0, 5.2)
     print_size = (WIDE, 3.8)
     PARAMS = table(
-        **Checkerboards.PARAMS,
+        **{
+            **Checkerboards.PARAMS,  # the affine image is not on the left here, but first
+            "mode": Param("affine", options=("affine", "subdivided"), label="first image"),
+        },
         ground=Param("checkerboard", options=SHOWS, label="outside: ground shows"),
         view=_view_param(),
     )
