@@ -214,7 +214,12 @@ def test_voila_shows_figures_and_sliders_without_code(tmp_path, page):
         before = wait_until_drawn(canvas)
         text = page.locator("body").inner_text()
         assert "Checkerboards" in text and "Try this" in text  # the prose is there
-        for code in ("apps.checkerboards()", "%matplotlib widget", "import interp", "def checker"):
+        for code in (
+            "apps.checkerboards_outside()",
+            "%matplotlib widget",
+            "import interp",
+            "def checker",
+        ):
             assert code not in text, f"Voilà shows code: {code}"
         drag_handle(page, slider(page, "height", scope="body"), 80)  # Voilà: one page
         wait_until_changed(canvas, before)

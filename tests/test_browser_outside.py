@@ -1,14 +1,13 @@
-"""The outside view in a real browser (JupyterLab, Debian's Chromium): a camera slider moves the
-camera's image and the outside view in one step, and the mouse orbits the outside view.
-
-Runs the checkerboard app with the outside view from a notebook written for the test (the
-lessons place it once the figures are registered)."""
+"""The outside view in a real browser (JupyterLab, Debian's Chromium): in lesson 6 as students get
+it, a camera slider moves the camera's image and the outside view in one step, and the mouse
+orbits the outside view.
+"""
 
 from __future__ import annotations
 
+import shutil
 import time
 
-import nbformat
 import numpy as np
 import pytest
 from browser import server
@@ -26,31 +25,17 @@ from test_browser import (  # noqa: F401 - fixtures
 
 pytestmark = pytest.mark.browser
 
-#: One notebook per test: each test opens its own, with a kernel of its own.
-NOTEBOOKS = ("outside_slider.ipynb", "outside_orbit.ipynb")
+#: Lesson 6, whose first app is the checkerboards beside the outside view, twice: each test opens
+#: its own copy, with a kernel of its own.
+LESSON = "06_checkerboards.ipynb"
+NOTEBOOKS = (LESSON, "06_checkerboards_orbit.ipynb")
 
 
 @pytest.fixture(scope="module")
 def lab(tmp_path_factory):
     workdir = tmp_path_factory.mktemp("lab-outside")
-    with server("lab", workdir) as url:
-        notebook = nbformat.v4.new_notebook()
-        notebook.cells = [
-            nbformat.v4.new_markdown_cell("# The outside view"),
-            nbformat.v4.new_code_cell(
-                "%matplotlib widget\n"
-                "from interp.apps._app import App\n"
-                "from interp.plots.lesson_figures_11 import CheckerboardsOutside"
-            ),
-            nbformat.v4.new_code_cell("App(CheckerboardsOutside)"),
-        ]
-        notebook.metadata["kernelspec"] = {
-            "name": "python3",
-            "display_name": "Python 3",
-            "language": "python",
-        }
-        for name in NOTEBOOKS:
-            nbformat.write(notebook, workdir / "lessons" / name)
+    with server("lab", workdir) as url:  # serves a copy of lessons/
+        shutil.copy(workdir / "lessons" / LESSON, workdir / "lessons" / NOTEBOOKS[1])
         yield url
 
 
@@ -61,10 +46,9 @@ def regions() -> dict[str, tuple[slice, slice]]:
     import matplotlib.pyplot
 
     matplotlib.use("agg")
-    from interp.apps._app import App
-    from interp.plots.lesson_figures_11 import CheckerboardsOutside
+    from interp import apps
 
-    app = App(CheckerboardsOutside)
+    app = apps.checkerboards_outside()  # what lesson 6 shows
     height = app.figure.bbox.height
     matplotlib.pyplot.close(app.figure)
 
