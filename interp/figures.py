@@ -359,10 +359,11 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _list() -> None:
-    for figure_class in FIGURES.values():
-        print(f"{figure_class.name:<18} {figure_class.description} (lesson {figure_class.lesson})")
-        for name, param in figure_class.PARAMS.items():
-            print(f"{'':<20}{name}={param.default}  in {param.range}")
+    width = max(len(name) for name in FIGURES)
+    for f in FIGURES.values():
+        print(f"{f.name:<{width}} {f.description} (lesson {f.lesson})")
+        for name, param in f.PARAMS.items():
+            print(f"{'':<{width + 2}}{name}={param.default}  in {param.range}")
 
 
 @contextlib.contextmanager
