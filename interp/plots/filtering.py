@@ -21,7 +21,7 @@ from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
 FILTERS = {
     "nearest": "point sampled (GL_NEAREST)",
     "box": "box filtered (exact average)",
-    "trilinear": "trilinear (GL_LINEAR_MIPMAP_LINEAR)",
+    "trilinear": "trilinear, from the mipmap",
 }
 #: Where the image shows nothing: a light blue, distinct from the grey far checks.
 SKY = "#d6e6f2"
@@ -275,7 +275,7 @@ class MipmapPyramid(Plot):
             check = (
                 f"{per_check:g} texel{'s' * (per_check != 1)} a check"
                 if per_check >= 1
-                else "checks averaged away"
+                else "all grey (0.5)"
             )
             ax.set_title(f"level {k}: {n}²\n{check}", fontsize="small")
 
