@@ -140,10 +140,7 @@ class FilteringPanels(Plot):
         ticks = [0, 64, 128, 192, 256]
         texture_ax.set_xticks(ticks)
         texture_ax.set_yticks(ticks)
-        # The two static titles sit below the images in z-order (they do not overlap, so a full
-        # draw is the same): a blit then leaves them in the background instead of drawing them
-        # again over it, which costs more than the images.
-        texture_ax.set_title("footprints in the texture", fontsize="small", zorder=-1)
+        texture_ax.set_title("footprints in the texture", fontsize="small")
         # What the texture panel shows, as a legend: it changes only with the frequency and the
         # scale, and a live canvas notices a legend change and redraws all (the texture image
         # itself stays in the saved background). Beneath the footprints, drawn over it.
@@ -173,7 +170,7 @@ class FilteringPanels(Plot):
         figure = lod_ax.get_figure(root=False)
         self.colorbar = figure.colorbar(self.lod, ax=lod_ax, shrink=0.8)
         self.colorbar.set_label("λ (mip level)")
-        lod_ax.set_title("λ per pixel", fontsize="small", zorder=-1)
+        lod_ax.set_title("λ per pixel", fontsize="small")
         sky = matplotlib.colormaps["gray"].with_extremes(bad=SKY)  # nothing drawn: not a grey check
         self.image = image_ax.imshow(blank, cmap=sky, vmin=0, vmax=1)
         self.marks = []
