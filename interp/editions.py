@@ -3,9 +3,10 @@
 ``source/lessons/NN_*.ipynb`` is the only copy a teacher edits (nbgrader's course layout: the
 assignment is called ``lessons``). Each source lesson carries
 
-- its exercise in one code cell marked as nbgrader's "autograded answer" (cell metadata
-  ``nbgrader.solution``), the solution between ``### BEGIN SOLUTION`` and ``### END SOLUTION``
-  lines, followed by the call to its checker in :mod:`interp.check`;
+- each of its exercises (the lesson's function, its recap quiz, lesson 7's worked example) in
+  one code cell marked as nbgrader's "autograded answer" (cell metadata ``nbgrader.solution``),
+  the solution between ``### BEGIN SOLUTION`` and ``### END SOLUTION`` lines, followed by the
+  call to its checker in :mod:`interp.check`;
 - under the figure of every "Try this" list, a markdown cell marked as nbgrader's "manually
   graded answer", holding a written answer to each prompt between the same markers.
 

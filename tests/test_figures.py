@@ -28,16 +28,10 @@ def exported(tmp_path_factory):
     return out
 
 
-#: Figures the lessons show with ``apps.App(registry.X)``: interp.apps has no function for them
-#: yet (issue 10 added them; interp/apps/ is another engineer's).
-WITHOUT_APP_FUNCTION = {"linear-on-screen", "shader"}
-
-
 def test_every_app_figure_is_exported_and_covers_every_lesson():
     from interp import apps
 
-    named = {name.replace("-", "_") for name in figures.FIGURES if name not in WITHOUT_APP_FUNCTION}
-    assert named == set(apps.ALL) - {n.replace("-", "_") for n in WITHOUT_APP_FUNCTION}
+    assert {name.replace("-", "_") for name in figures.FIGURES} == set(apps.ALL)
     for figure_class in figures.FIGURES.values():
         assert figure_class.caption.endswith(f"(Lesson {figure_class.lesson})")
     # lessons 1 to 8; lesson 9, the cheat sheet, has no figure

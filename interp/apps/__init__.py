@@ -15,7 +15,8 @@ lesson                 apps
 4 depth                :func:`depth`
 5 attributes           :func:`attributes`, :func:`colour_quad`
 6 checkerboards        :func:`checkerboards`, :func:`uv_images`
-7 triangles and GPUs   :func:`barycentrics`, :func:`clipping`, :func:`approximations`
+7 triangles            :func:`linear_on_screen`, :func:`barycentrics`
+8 GPUs                 :func:`shader`, :func:`clipping`, :func:`approximations`
 =====================  =====================================================================
 
 :func:`presentation` makes later apps larger, for a projector.
@@ -68,18 +69,28 @@ def uv_images() -> App:
     return App(registry.UVImagesFigure)
 
 
+def linear_on_screen() -> App:
+    """Lesson 7's app: which quantities are planes over the screen (1/w, u/w), which not (w, u)."""
+    return App(registry.LinearOnScreen)
+
+
 def barycentrics() -> App:
     """Lesson 7's app: one triangle coloured by its barycentrics, screen-space and clip-space."""
     return App(registry.Barycentrics)
 
 
+def shader() -> App:
+    """Lesson 8's app: what a fragment shader receives, smooth beside the other qualifiers."""
+    return App(registry.Shader)
+
+
 def clipping() -> App:
-    """Lesson 7's app: near-plane clipping as the camera moves through the plane."""
+    """Lesson 8's app: near-plane clipping as the camera moves through the plane."""
     return App(registry.Clipping)
 
 
 def approximations() -> App:
-    """Lesson 7's app: the approximation lab."""
+    """Lesson 8's app: the approximation lab."""
     return App(registry.Approximations)
 
 
@@ -93,7 +104,9 @@ ALL = {
     "colour_quad": colour_quad,
     "checkerboards": checkerboards,
     "uv_images": uv_images,
+    "linear_on_screen": linear_on_screen,
     "barycentrics": barycentrics,
+    "shader": shader,
     "clipping": clipping,
     "approximations": approximations,
 }
@@ -108,8 +121,10 @@ __all__ = [
     "clipping",
     "colour_quad",
     "depth",
+    "linear_on_screen",
     "presentation",
     "projecting_a_line",
+    "shader",
     "st_mapping",
     "the_problem",
     "uv_images",
