@@ -3,13 +3,11 @@
 from __future__ import annotations
 
 import ipywidgets as widgets
-import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from matplotlib.backend_bases import MouseEvent
-from matplotlib.collections import LineCollection
 
 import interp
 from interp import approximation, apps
@@ -17,25 +15,7 @@ from interp.plots.gpu import LAB_CAMERA
 from interp.plots.registry import RESOLUTIONS
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, checker_views
 
-
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    plt.close("all")
-
-
-def shown_arrays(figure):
-    """Every number the figure displays: line data, images, line collections."""
-    for ax in figure.axes:
-        for line in ax.lines:
-            yield np.asarray(line.get_xydata(), float)
-        for image in ax.images:
-            data = image.get_array()
-            yield np.ma.compressed(data) if np.ma.isMaskedArray(data) else np.asarray(data)
-        for collection in ax.collections:
-            if isinstance(collection, LineCollection):
-                for segment in collection.get_segments():
-                    yield np.asarray(segment, float)
+from helpers import shown_arrays
 
 
 def snapshot(figure):

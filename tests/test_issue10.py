@@ -10,7 +10,6 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 import nbformat
 import numpy as np
 import pytest
@@ -21,12 +20,6 @@ from interp import depth, lerp, mistakes
 from interp.plots.registry import FIGURES
 
 SOURCES = Path(interp.__file__).resolve().parent.parent / "source" / "lessons"
-
-
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    plt.close("all")
 
 
 def cells(number: int) -> list[nbformat.NotebookNode]:

@@ -4,7 +4,6 @@ plot that drew it, at the defaults and at settings the lessons' prompts ask for.
 
 from __future__ import annotations
 
-import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 from matplotlib.figure import Figure
@@ -17,12 +16,6 @@ from interp.plots.params import camera_from
 from interp.plots.planes import verdict
 from interp.plots.registry import FIGURES, RESOLUTIONS
 from interp.scenes import LESSON_SIZE, checker_views
-
-
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    plt.close("all")
 
 
 def _camera(p, width, height):
