@@ -88,23 +88,18 @@ def draw(
 
     Parameters
     ----------
-    clip : (N, 4) array_like
-        Clip-space vertex positions ``(x, y, z, w)``.
-    attributes : (N, K) array_like
-        Vertex attributes to interpolate.
-    triangles : (M, 3) array_like of int
-        Vertex indices, in draw order. Both windings are drawn.
-    width, height : int
-        Image size in pixels, each in [1, 4096].
+    clip, attributes, triangles, width, height
+        The scene and the image size, exactly as for :func:`~interp.rasterize`: clip-space
+        ``(x, y, z, w)`` per vertex, K attributes per vertex, vertex indices in draw order.
     mode : {"perspective", "affine"}
         GLSL ``smooth`` (divide by the interpolated ``1/w``) or ``noperspective``.
 
     Returns
     -------
-    values : (height, width, K) float array
-        Attributes at each pixel centre; 0 where nothing is drawn. Row 0 is the top.
-    covered : (height, width) bool array
-        Where a triangle was drawn.
+    values, covered : ndarray
+        As :func:`~interp.rasterize` returns them: a ``(height, width, K)`` float array of the
+        attributes at each pixel centre (0 where nothing is drawn; row 0 is the top), and a
+        ``(height, width)`` bool array of where a triangle was drawn.
 
     Examples
     --------
