@@ -284,7 +284,7 @@ c.CourseDirectory.course_id = "interp"
 c.ClearSolutions.code_stub = {{"python": {CODE_STUB!r}}}
 c.ClearSolutions.text_stub = "YOUR ANSWER HERE"
 # Autograding runs each lesson top to bottom: its figures take a few seconds a cell.
-c.ExecutePreprocessor.timeout = 300
+c.Execute.timeout = 300
 '''
 
 
