@@ -78,8 +78,12 @@ def build_site(
     binder: str = "https://mybinder.org",
     branch: str = "main",
     lessons: Sequence[Path] | None = None,
+    handout: Sequence[str] | None = None,
 ) -> Path:
-    """Build the website into ``out``; return the folder of its HTML pages."""
+    """Build the website into ``out``; return the folder of its HTML pages.
+
+    ``lessons`` (default: every lesson in ``lessons/``) and ``handout`` (the figures in the
+    handout; default: all) let the tests build a smaller site the same way."""
     out = Path(out).resolve()
     book = out / "src"
     shutil.rmtree(book, ignore_errors=True)
@@ -89,9 +93,8 @@ def build_site(
         # The handout is drawn by another process while the lessons run: two cores, both busy.
         handouts = Path(work) / "handouts"
         figures = [sys.executable, "-m", "interp.figures", "--out", str(handouts)]
-        drawing = subprocess.Popen(
-            [*figures, "--format", "pdf"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE
-        )
+        figures += ["--format", "pdf", *(["--only", *handout] if handout else [])]
+        drawing = subprocess.Popen(figures, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         try:
             for path in lessons:
                 start = time.perf_counter()
