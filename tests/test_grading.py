@@ -208,3 +208,11 @@ def test_nbgrader_grades_a_right_and_a_wrong_submission(tmp_path):
     assert verdict.message in feedback("bob", "05_attributes")
     for name in GRADED:
         assert "✓" in feedback("ada", name) and "AssertionError" not in feedback("ada", name)
+
+
+def test_course_command_line(tmp_path, capsys):
+    assert editions.main(["course", "--root", str(ROOT), "--out", str(tmp_path)]) == 0
+    assert sorted(p.name for p in (tmp_path / "source" / "lessons").iterdir()) == [
+        p.name for p in SOURCES
+    ]
+    assert "nbgrader_config.py" in capsys.readouterr().out

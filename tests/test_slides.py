@@ -50,6 +50,13 @@ def test_slides_follow_the_lesson_structure(path):
     assert kinds(slides)[0] == "slide"
 
 
+def test_slides_command_line(tmp_path):
+    assert editions.main(["slides", "--root", str(ROOT), "--out", str(tmp_path)]) == 0
+    for path in LESSONS:
+        written = nbformat.read(tmp_path / path.name, as_version=4)
+        assert kinds(written) == kinds(editions.slides_edition(nbformat.read(path, as_version=4)))
+
+
 def test_make_slides_serves_them_live_in_presentation_mode():
     makefile = (ROOT / "Makefile").read_text()
     recipe = re.search(r"^slides:.*\n((?:\t.+\n)+)", makefile, re.M).group(1)
