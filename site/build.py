@@ -122,9 +122,11 @@ def build_site(
         str(out),
         "--warningiserror",
         "--keep-going",
-        "--quiet",
     ]
-    subprocess.run(command, check=True)
+    # Its own report names the folder it builds in, which moves to OUT/html: shown on failure only
+    built = subprocess.run(command, capture_output=True, text=True)
+    if built.returncode != 0:
+        raise RuntimeError(f"jupyter-book failed:\n{built.stdout[-5000:]}\n{built.stderr[-5000:]}")
     html = out / "html"
     shutil.rmtree(html, ignore_errors=True)
     shutil.move(out / "_build" / "html", html)
