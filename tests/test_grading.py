@@ -44,19 +44,23 @@ def cells(notebook: nbformat.NotebookNode, prefix: str) -> list[nbformat.Noteboo
 def test_each_exercise_is_an_answer_cell_and_a_locked_graded_test(path):
     source = nbformat.read(path, as_version=4)
     course = editions.course_edition(source)
-    (exercise,) = [c for c in source.cells if editions.is_exercise(c)]
-    name, function = editions.CHECKER_CALL.search(exercise.source).groups()
-    assert name in check.__all__
-    index = next(i for i, c in enumerate(course.cells) if c.id == exercise.id)
-    answer, test = course.cells[index], course.cells[index + 1]
-    assert answer.metadata.nbgrader == exercise.metadata.nbgrader  # nbgrader's answer cell
-    assert answer.source.rstrip().endswith(editions.END) and "check." not in answer.source
-    grading = test.metadata.nbgrader
-    assert grading["grade"] and grading["locked"] and not grading["solution"]
-    assert grading["points"] == editions.EXERCISE_POINTS
-    assert f"verdict = check.{name}({function})\nassert verdict, verdict" in test.source
+    exercises = [c for c in source.cells if editions.is_exercise(c)]
+    assert exercises or path.stem.endswith("cheat_sheet"), "a lesson without an exercise"
+    tests = []
+    for exercise in exercises:
+        name, function = editions.CHECKER_CALL.search(exercise.source).groups()
+        assert name in check.__all__
+        index = next(i for i, c in enumerate(course.cells) if c.id == exercise.id)
+        answer, test = course.cells[index], course.cells[index + 1]
+        assert answer.metadata.nbgrader == exercise.metadata.nbgrader  # nbgrader's answer cell
+        assert answer.source.rstrip().endswith(editions.END) and "check." not in answer.source
+        grading = test.metadata.nbgrader
+        assert grading["grade"] and grading["locked"] and not grading["solution"]
+        assert grading["points"] == editions.EXERCISE_POINTS
+        assert f"verdict = check.{name}({function})\nassert verdict, verdict" in test.source
+        tests.append(test.id)
     # everything else is the source's, in order
-    others = [c for c in course.cells if c.id != test.id]
+    others = [c for c in course.cells if c.id not in tests]
     assert [c.id for c in others] == [c.id for c in source.cells]
     grade_ids = [c.metadata.nbgrader["grade_id"] for c in course.cells if "nbgrader" in c.metadata]
     assert len(set(grade_ids)) == len(grade_ids)
@@ -110,30 +114,36 @@ STUB = re.compile(r"( *)# YOUR CODE HERE\n\1raise NotImplementedError\(\)")
 
 
 def submit(release: Path, to: Path, answers: dict[str, str]) -> None:
-    """A student's submission: the released notebooks, each exercise's stub replaced."""
+    """A student's submission: the released notebooks, the stub of each exercise named in
+    ``answers`` (by its grade id) replaced by the answer; the other exercises left unanswered."""
     to.mkdir(parents=True)
     for path in sorted(release.glob("*.ipynb")):
         notebook = nbformat.read(path, as_version=4)
-        (answer,) = cells(notebook, "exercise-")
-        if path.stem in answers:
-            lines = answers[path.stem].split("\n")
-            answer.source, replaced = STUB.subn(
-                lambda m, lines=lines: "\n".join(m[1] + line for line in lines), answer.source
-            )
-            assert replaced == 1, answer.source
+        for answer in cells(notebook, "exercise-"):
+            if answer.metadata.nbgrader["grade_id"] in answers:
+                lines = answers[answer.metadata.nbgrader["grade_id"]].split("\n")
+                answer.source, replaced = STUB.subn(
+                    lambda m, lines=lines: "\n".join(m[1] + line for line in lines),
+                    answer.source,
+                )
+                assert replaced == 1, answer.source
         nbformat.write(notebook, to / path.name)
 
 
-def solution(name: str) -> str:
-    """The teacher's solution body of a lesson's exercise, unindented."""
+def solutions(name: str) -> dict[str, str]:
+    """The teacher's solution body of each exercise of a lesson, unindented, by grade id."""
     source = nbformat.read(ROOT / "source" / "lessons" / f"{name}.ipynb", as_version=4)
-    (exercise,) = [c for c in source.cells if editions.is_exercise(c)]
-    body = exercise.source.split(editions.BEGIN)[1].split(editions.END)[0]
-    lines = [line for line in body.split("\n")[1:] if line.strip()]
-    indent = min(len(line) - len(line.lstrip()) for line in lines)
-    return "\n".join(line[indent:] for line in lines)
+    bodies = {}
+    for exercise in [c for c in source.cells if editions.is_exercise(c)]:
+        body = exercise.source.split(editions.BEGIN)[1].split(editions.END)[0]
+        lines = [line for line in body.split("\n")[1:] if line.strip()]
+        indent = min(len(line) - len(line.lstrip()) for line in lines)
+        bodies[exercise.metadata.nbgrader["grade_id"]] = "\n".join(line[indent:] for line in lines)
+    return bodies
 
 
+#: The grade id of lesson 5's perspective_lerp exercise.
+LERP = "exercise-05-09"
 AFFINE = "return a1 + s * (a2 - a1)"  # the classic mistake: interpolating on the screen
 
 
@@ -156,13 +166,22 @@ def test_nbgrader_grades_a_right_and_a_wrong_submission(tmp_path):
         released = nbformat.read(release / f"{name}.ipynb", as_version=4)
         text = json.dumps(released)
         assert "BEGIN SOLUTION" not in text and "YOUR CODE HERE" in text
-        (test,) = cells(released, "check-")
-        assert test.metadata.get("editable") is False and test.metadata.get("deletable") is False
+        tests = cells(released, "check-")
+        assert len(tests) == len(cells(released, "exercise-")) >= 1
+        for test in tests:
+            assert test.metadata.get("editable") is False
+            assert test.metadata.get("deletable") is False
 
     # 2. Two submissions, in nbgrader's no-exchange layout: submitted/STUDENT/ASSIGNMENT/.
-    right = {name: solution(name) for name in GRADED}
+    right = {grade_id: body for name in GRADED for grade_id, body in solutions(name).items()}
     submit(release, course / "submitted" / "ada" / "lessons", right)
-    submit(release, course / "submitted" / "bob" / "lessons", {"05_attributes": AFFINE})
+    # Bob answers the perspective_lerp exercise with the classic mistake and leaves the recap.
+    assert (
+        "def perspective_lerp("
+        in nbformat.writes(nbformat.read(release / "05_attributes.ipynb", as_version=4))
+        and LERP in right
+    )
+    submit(release, course / "submitted" / "bob" / "lessons", {LERP: AFFINE})
 
     # 3. Autograde, and read the scores from the gradebook.
     nbgrader("autograde", "lessons", cwd=course)
@@ -186,12 +205,11 @@ def test_nbgrader_grades_a_right_and_a_wrong_submission(tmp_path):
     )
     grades = json.loads(result.stdout)
     points = editions.EXERCISE_POINTS
-    for name in GRADED:
-        check_id = f"check-{name[:2]}-"
-        (ada,) = [v for k, v in grades["ada"].items() if k.startswith(check_id)]
-        (bob,) = [v for k, v in grades["bob"].items() if k.startswith(check_id)]
-        assert ada == [points, points], (name, grades["ada"])
-        assert bob == [0, points], (name, grades["bob"])
+    right_ids = {f"check-{grade_id.removeprefix('exercise-')}" for grade_id in right}
+    assert set(grades["ada"]) >= right_ids and set(grades["bob"]) >= right_ids
+    for check_id in right_ids:
+        assert grades["ada"][check_id] == [points, points], (check_id, grades["ada"])
+        assert grades["bob"][check_id] == [0, points], (check_id, grades["bob"])
 
     # 4. Feedback: the wrong submission's says what the checker says, the right one's says ✓.
     nbgrader("generate_feedback", "lessons", cwd=course)
