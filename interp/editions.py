@@ -259,10 +259,44 @@ def build_teacher(root: Path, out: Path, html: bool = True) -> list[Path]:
         written.append(target)
         if html:
             page, _ = HTMLExporter().from_notebook_node(notebook)
-            target.with_suffix(".html").write_text(page)
+            target.with_suffix(".html").write_text(with_alt_text(page, notebook))
             written.append(target.with_suffix(".html"))
         print(f"{path.name}: {len(verdicts(notebook))} exercise solved, no error", flush=True)
     return written
+
+
+def with_alt_text(page: str, notebook: nbformat.NotebookNode) -> str:
+    """``page``, nbconvert's HTML of ``notebook``, with each figure's alt text (which the apps
+    put in their outputs' metadata, and nbconvert's template leaves out) on its ``<img>``.
+
+    Examples
+    --------
+    >>> output = nbformat.v4.new_output(
+    ...     "display_data", {"image/png": "iVBO"}, metadata={"image/png": {"alt": "A & B"}})
+    >>> notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(outputs=[output])])
+    >>> with_alt_text('<img alt="No description" src="data:image/png;base64,iVBO">', notebook)
+    '<img alt="A &amp; B" src="data:image/png;base64,iVBO">'
+    """
+    from html import escape
+
+    alt = {
+        output.data["image/png"].strip(): output.metadata["image/png"]["alt"]
+        for cell in notebook.cells
+        for output in cell.get("outputs", [])
+        if "image/png" in output.get("data", {})
+        and "alt" in output.get("metadata", {}).get("image/png", {})
+    }
+
+    def labelled(match: re.Match) -> str:
+        text = alt.get(match["data"].strip())
+        if text is None:
+            return match[0]
+        others = re.sub(r'\s*\balt="[^"]*"', "", match["others"])  # nbconvert's placeholder
+        return f'<img alt="{escape(text)}"{others} src="data:image/png;base64,{match["data"]}"'
+
+    return re.sub(
+        r'<img(?P<others>[^>]*?)\s+src="data:image/png;base64,(?P<data>[^"]*)"', labelled, page
+    )
 
 
 #: Points of each exercise's graded test cell (a list of prompts earns one point per prompt).

@@ -58,6 +58,15 @@ def static_lesson(path: Path, workdir: Path) -> nbformat.NotebookNode:
     for cell in notebook.cells:
         if cell.cell_type == "code":
             cell.outputs = [o for o in cell.outputs if WIDGET_VIEW not in o.get("data", {})]
+            # The figure's alt text (an app's title and key result, in its output's metadata),
+            # where MyST-NB looks for it: the cell's image options.
+            alts = {
+                o.metadata["image/png"]["alt"]
+                for o in cell.outputs
+                if "alt" in o.get("metadata", {}).get("image/png", {})
+            }
+            if len(alts) == 1:
+                cell.metadata["mystnb"] = {"image": {"alt": alts.pop()}}
     notebook.metadata.pop("widgets", None)
     return notebook
 

@@ -229,6 +229,9 @@ def check_page(site: Path, page, name: str) -> list[str]:
                 found.append(f"figure {k} did not load")
                 continue
             src = image.evaluate("i => i.src")
+            alt = image.get_attribute("alt") or ""
+            if len(alt) < 20 or alt.startswith("_images/"):  # the figure's title and result
+                found.append(f"figure {k} has no alt text: {alt!r}")
             pixels = np.asarray(Image.open(_local_path(site, src)).convert("L"), dtype=float)
             if pixels.std() < 10:
                 found.append(f"figure {k} is blank: {src}")
