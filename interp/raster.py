@@ -238,7 +238,7 @@ def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> 
     span = _checks.positive_int(span, "span")
     image = np.zeros((frags.height * frags.width, frags.clipped.smooth.shape[2]))
     for chunk, values in _values_in_chunks(frags, mode, span):
-        image[frags.pixel[chunk]] = values.T
+        _scatter(image, frags.pixel[chunk], values.T)
     return image.reshape(frags.height, frags.width, -1)
 
 
@@ -397,7 +397,7 @@ class Fragments:
         """
         values = np.asarray(values)
         out = np.full((self.height * self.width, *values.shape[1:]), fill, dtype=values.dtype)
-        out[self.pixel] = values
+        _scatter(out, self.pixel, values)
         return out.reshape(self.height, self.width, *values.shape[1:])
 
 
@@ -469,6 +469,15 @@ def fragment_footprints(
         )
         footprint += np.abs(da)
     return footprint
+
+
+def _scatter(out: np.ndarray, index: np.ndarray, values: np.ndarray) -> None:
+    """``out[index] = values``, for (N, ...) ``out`` and (P, ...) ``values``, one column at a
+    time: numpy scatters a column several times faster than rows of a few values each."""
+    columns = int(np.prod(out.shape[1:]))
+    out, values = out.reshape(len(out), columns), values.reshape(len(values), columns)
+    for k in range(columns):
+        out[:, k][index] = values[:, k]
 
 
 def _check_fragments(frags: object) -> None:
