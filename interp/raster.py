@@ -526,6 +526,7 @@ class _Scan:
 
 
 def _scan(pieces: ClippedTriangles, width: int, height: int, depth_bits: int) -> _Scan:
+    """Snap, orient and scan-convert the clipped triangles: their row items and planes."""
     window = _viewport(pieces.clip, width, height)
     X = np.rint(window[..., 0] * SUBPIXELS).astype(np.int64)  # snap to the subpixel grid
     Y = np.rint(window[..., 1] * SUBPIXELS).astype(np.int64)
