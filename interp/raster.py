@@ -159,9 +159,9 @@ def rasterize(
     lines = _RowLines(scan, mode)
     values = np.zeros((height, width, scan.pieces.smooth.shape[2]))
     covered = np.zeros((height, width), dtype=bool)
-    for rows, items, drawn, won in _depth_test(scan):
+    for rows, drawn, item in _depth_test(scan):
         covered[rows] = drawn
-        lines.evaluate(items, won, out=values[rows])
+        lines.evaluate(item, out=values[rows])
     return values, covered
 
 
@@ -560,12 +560,12 @@ def _scan(pieces: ClippedTriangles, width: int, height: int, depth_bits: int) ->
 def _fragments(scan: _Scan) -> Fragments:
     """The fragments that pass the depth test, in image order: what :func:`fragments` returns."""
     width, rows = scan.width, scan.rows
-    pixels, winners = [np.zeros(0, dtype=np.int64)], [np.zeros(0, dtype=np.int64)]
-    for band, items, drawn, won in _depth_test(scan):
+    pixels, items = [np.zeros(0, dtype=np.int64)], [np.zeros(0, dtype=np.int64)]
+    for band, drawn, item in _depth_test(scan):
         in_band = np.flatnonzero(drawn)
         pixels.append(band.start * width + in_band)
-        winners.append(items[won.ravel()[in_band]])
-    pixel, item = np.concatenate(pixels), np.concatenate(winners)
+        items.append(item.ravel()[in_band])
+    pixel, item = np.concatenate(pixels), np.concatenate(items)
     x = pixel % width
     line = np.take(np.concatenate([scan.b_at_0, scan.b_dx[:, rows.piece]]), item, axis=1)
     return Fragments(
@@ -630,7 +630,6 @@ class _Rows:
     y: np.ndarray  # (R,) which row (window y, 0 at the bottom)
     x_first: np.ndarray  # (R,) first covered column
     x_last: np.ndarray  # (R,) last covered column (x_last < x_first: none)
-    K: np.ndarray  # (R, 3) E_i at column 0 of the row: E_i(x) = SUBPIXELS A_i x + K_i
 
 
 def _rows(Y: np.ndarray, e: _Edges, width: int, height: int) -> _Rows:
@@ -663,7 +662,7 @@ def _rows(Y: np.ndarray, e: _Edges, width: int, height: int) -> _Rows:
     never = np.any((A == 0) & (K < threshold), axis=1)
     x_first = np.maximum(from_left.max(axis=1), 0)
     x_last = np.where(never, -1, np.minimum(to_right.min(axis=1), width - 1))
-    return _Rows(piece, y, x_first, x_last, K)
+    return _Rows(piece, y, x_first, x_last)
 
 
 def _ceil_div(a: np.ndarray, b: np.ndarray | int) -> np.ndarray:
@@ -718,40 +717,40 @@ def _reorder(pieces: ClippedTriangles, order: np.ndarray) -> ClippedTriangles:
 # ----------------------------------------------
 
 
-def _depth_test(scan: _Scan) -> Iterator[tuple[slice, np.ndarray, np.ndarray, np.ndarray]]:
+def _depth_test(scan: _Scan) -> Iterator[tuple[slice, np.ndarray, np.ndarray]]:
     """Depth test ``GL_LESS`` against a buffer cleared to 1: the row item that wins each pixel.
 
     What a textbook writes per fragment, ``if z < depth[y, x]: depth[y, x] = z; drawn[y, x] =
     item``, for all fragments at once. Each fragment's key packs its depth, rounded to
     ``depth_bits``-bit fixed point (rounding keeps equal depths equal despite float rounding),
-    above its row item's number, which grows in draw order. The smallest key per pixel
+    above its row item's index, which grows in draw order. The smallest key per pixel
     (``np.minimum.at``) is then the nearest fragment, and among equally near ones the first
     drawn: as in OpenGL, where a later fragment must be strictly nearer to replace an earlier
     one.
 
     The image is tested in bands of whole rows, about BAND pixels each, top to bottom: each
     band only against the row items on its rows, and their fragments CHUNK at a time. Yields,
-    for every band something may be drawn on: its image rows (a slice); its row items (n,
-    ascending, so in draw order); where something was drawn ((rows, width) bool); and which of
-    the band's row items won each pixel ((rows, width) int: an index into them, n where none).
+    for every band something may be drawn on, its image rows (a slice), where something was
+    drawn ((rows, width) bool), and the row item that won each pixel ((rows, width) int; R, one
+    past the last row item, where nothing was).
     """
     rows, width, height = scan.rows, scan.width, scan.height
-    item_bits = max(len(rows.piece).bit_length(), 1)  # at most 23: see MAX_ROWS
+    none = len(rows.piece)  # the row item R: nothing drawn
+    item_bits = max(none.bit_length(), 1)  # 0 to R fit: at most 23, see MAX_ROWS
     depth_bits = min(scan.depth_bits, 62 - item_bits)  # so 40 bits may become 39
-    one = int(_fixed_point(np.array(1.0), depth_bits))  # depth 1: nothing passes there
+    # The cleared buffer holds depth 1, where nothing passes, and row item R. As a key: just
+    # below every fragment at depth 1 and above every nearer one, ((1 - one step) << bits) | R.
+    cleared = ((int(_fixed_point(np.array(1.0), depth_bits)) - 1) << item_bits) | none
 
     length = np.maximum(rows.x_last - rows.x_first + 1, 0)
     image_row = height - 1 - rows.y  # row 0 at the top
     band_rows = max(BAND // width, 1)
     band = image_row // band_rows
-    by_band = np.argsort(band, kind="stable")  # the row items, band by band, each ascending
+    by_band = np.argsort(band, kind="stable")  # the row items, band by band
     band_ends = np.searchsorted(band[by_band], np.arange(1, _ceil_div(height, band_rows)))
     for top, items in zip(range(0, height, band_rows), np.split(by_band, band_ends), strict=True):
         if len(items) == 0:
             continue
-        # The cleared buffer holds depth 1 and row item n, none. As a key, just below every
-        # fragment at depth 1 and above every nearer one: ((1 - one step) << item_bits) | n.
-        cleared = ((one - 1) << item_bits) | len(items)
         band_height = min(band_rows, height - top)
         keys = np.full(band_height * width, cleared, dtype=np.int64)
         n = length[items]
@@ -761,7 +760,7 @@ def _depth_test(scan: _Scan) -> Iterator[tuple[slice, np.ndarray, np.ndarray, np
             stop = int(np.searchsorted(first_fragment, first_fragment[start] + CHUNK))
             stop = max(stop, start + 1)
             chunk, count = items[start:stop], n[start:stop]
-            item = np.repeat(np.arange(start, stop), count)  # the band's own numbering
+            item = np.repeat(chunk, count)
             shift = first_fragment[start:stop] - first_fragment[start] - rows.x_first[chunk]
             x = np.arange(item.size) - np.repeat(shift, count)
             z = np.repeat(scan.z_at_0[chunk], count) + np.repeat(scan.z_dx[chunk], count) * x
@@ -770,7 +769,7 @@ def _depth_test(scan: _Scan) -> Iterator[tuple[slice, np.ndarray, np.ndarray, np
             np.minimum.at(keys, pixel, (depth << item_bits) | item)
             start = stop
         keys = keys.reshape(band_height, width)
-        yield slice(top, top + band_height), items, keys < cleared, keys & ((1 << item_bits) - 1)
+        yield slice(top, top + band_height), keys < cleared, keys & ((1 << item_bits) - 1)
 
 
 def _fixed_point(z: np.ndarray, bits: int) -> np.ndarray:
@@ -828,36 +827,39 @@ class _RowLines:
     ``a/w`` and ``1/w`` (perspective) or ``a`` (affine) are planes over the screen: along the
     row of a row item, each is a line, its value at the span's first column plus a step per
     column. The value is a lerp of the vertices' values with the barycentrics there, the step
-    one with the barycentrics' steps. Starting from the span's first column rather than column
-    0 keeps the arithmetic as exact as the barycentrics themselves.
+    (the same for the whole triangle) one with the barycentrics' steps. Starting from the
+    span's first column rather than column 0 keeps the arithmetic as exact as the barycentrics.
+
+    One more row item, R, on one more triangle, T, is for pixels nothing was drawn on: its
+    lines are 0 (and 1/w = 1), so that those pixels come out 0 without a mask.
     """
 
     def __init__(self, scan: _Scan, mode: str) -> None:
-        self.scan = scan
+        rows, pieces = scan.rows, scan.pieces
         self.divide = mode == "perspective"  # a = (a/w) / (1/w)
-        pieces = scan.pieces
         # (T, 3, K'): K' = K attributes, or K a/w and then 1/w
-        self.per_vertex = _a_over_w_and_one_over_w(pieces) if self.divide else pieces.noperspective
-        self.step = barycentric.lerp(scan.b_dx, np.moveaxis(self.per_vertex, 0, 2))  # (K', T)
+        per_vertex = _a_over_w_and_one_over_w(pieces) if self.divide else pieces.noperspective
+        columns, R = per_vertex.shape[2], len(rows.piece)
+        self.piece = np.append(rows.piece, len(pieces))  # (R + 1,)
+        self.first = np.append(rows.x_first, 0).astype(np.float64)  # (R + 1,)
+        self.at_first = np.zeros((columns, R + 1))
+        self.at_first[-1:, R] = 1.0 if self.divide else 0.0
+        step = barycentric.lerp(scan.b_dx, np.moveaxis(per_vertex, 0, 2))  # (K', T)
+        self.step = np.hstack([step, np.zeros((columns, 1))])  # (K', T + 1)
+        n = max(VALUES_CHUNK // max(columns, 1), 1)
+        for items in (slice(i, min(i + n, R)) for i in range(0, R, n)):  # to bound memory
+            piece = rows.piece[items]
+            b_first = scan.b_at_0[:, items] + scan.b_dx[:, piece] * rows.x_first[items]
+            self.at_first[:, items] = barycentric.lerp(b_first, _per_fragment(per_vertex, piece))
 
-    def evaluate(self, items: np.ndarray, won: np.ndarray, out: np.ndarray) -> None:
+    def evaluate(self, item: np.ndarray, out: np.ndarray) -> None:
         """Into ``out`` (rows, width, K): the attributes at each pixel of a band of image rows,
-        from the line of the row item that won it: ``items[won]``, none where ``won`` is
-        ``len(items)``."""
-        scan = self.scan
-        piece, first = scan.rows.piece[items], scan.rows.x_first[items]
-        b_first = scan.b_at_0[:, items] + scan.b_dx[:, piece] * first  # (3, n)
-        at_first = barycentric.lerp(b_first, _per_fragment(self.per_vertex, piece))  # (K', n)
-        # One more line, n, for pixels nothing was drawn on: 0 (and 1/w = 1), so that they
-        # come out 0 without a mask.
-        nothing = np.zeros((len(at_first), 1))
-        nothing[-1:] = 1.0 if self.divide else 0.0
-        at_first = np.hstack([at_first, nothing])
-        step = np.hstack([self.step[:, piece], np.zeros_like(nothing)])
-        x = np.arange(out.shape[1]) - np.append(first, 0).astype(np.float64).take(won)
+        from the line of the row item that won it (``item``, (rows, width))."""
+        piece = self.piece.take(item)
+        x = np.arange(out.shape[1]) - self.first.take(item)  # columns from the span's first
 
         def along_row(k: int) -> np.ndarray:  # a/w, 1/w or a at each pixel
-            return at_first[k].take(won) + step[k].take(won) * x
+            return self.at_first[k].take(item) + self.step[k].take(piece) * x
 
         if not self.divide:
             for k in range(out.shape[2]):
