@@ -843,7 +843,8 @@ class _RowLines:
         self.piece = np.append(rows.piece, len(pieces))  # (R + 1,)
         self.first = np.append(rows.x_first, 0).astype(np.float64)  # (R + 1,)
         self.at_first = np.zeros((columns, R + 1))
-        self.at_first[-1:, R] = 1.0 if self.divide else 0.0
+        if self.divide:
+            self.at_first[-1, R] = 1.0  # 1/w where nothing was drawn: 0 / 1 = 0
         step = barycentric.lerp(scan.b_dx, np.moveaxis(per_vertex, 0, 2))  # (K', T)
         self.step = np.hstack([step, np.zeros((columns, 1))])  # (K', T + 1)
         n = max(VALUES_CHUNK // max(columns, 1), 1)
