@@ -245,11 +245,13 @@ def test_static_display_shows_the_figure_once_and_updates_it(monkeypatch):
     monkeypatch.setattr("interp.apps._app.display", fake_display)
     app = apps.st_mapping()
     app._ipython_display_()
-    assert [kind for kind, *_ in shown] == ["display", "display", "display"]
-    assert shown[0][1] is app.figure and isinstance(shown[2][1], widgets.Widget)
-    alt = shown[0][2]["image/png"]["alt"]
+    assert [kind for kind, *_ in shown] == ["display"] * 4
+    # the sliders' names for screen readers, the picture, the result as text, the controls
+    assert "aria-label" in shown[0][1].data
+    assert shown[1][1] is app.figure and isinstance(shown[3][1], widgets.Widget)
+    alt = shown[1][2]["image/png"]["alt"]
     assert alt.startswith(app.plot.title) and app.plot.readout() in alt  # the picture's alt text
-    assert shown[1][1]._repr_html_() == app.readout.value  # the result as text
+    assert shown[2][1]._repr_html_() == app.readout.value  # the result as text
     app.controls["w2"].value = 7.0
     updates = [entry for entry in shown if entry[0] == "update"]
     assert updates[0][1] is app.figure and "alt" in updates[0][2]["image/png"]
