@@ -198,9 +198,13 @@ def approximations(p):
     k, j = list(spans.setting).index(16), list(tess.setting).index(8)
     if spans.divides_per_pixel[k] == 0:
         return ["out of view"]
+
+    def texels(error):  # an exact method's error is rounding: said as 0
+        return "0 (to rounding)" if error < 1e-9 else f"{error:.3g}"
+
     return [
-        f"mean error {spans.mean_error[k]:.3g} texels at {spans.divides_per_pixel[k]:.3f}",
-        f"{tess.mean_error[j]:.3g} texels at {tess.divides_per_pixel[j]:.3f}",
+        f"mean error {texels(spans.mean_error[k])} texels at {spans.divides_per_pixel[k]:.3f}",
+        f"{texels(tess.mean_error[j])} texels at {tess.divides_per_pixel[j]:.3f}",
     ]
 
 
