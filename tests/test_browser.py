@@ -349,6 +349,15 @@ def test_the_readout_is_live_text_that_follows_a_slider_named_for_screen_readers
     assert sliders.count() >= 10
     for k in range(sliders.count()):
         assert sliders.nth(k).get_attribute("aria-label"), f"slider {k} has no name"
+    # The dropdowns are named by their labels already (a <label for=...> beside a <select>).
+    dropdowns = page.locator(f"{VISIBLE} .widget-dropdown select")
+    named = [
+        page.get_by_role("combobox", name=param.label, exact=True).count()
+        for figure_class in (registry.Checkerboards, registry.UVImagesFigure)
+        for param in figure_class.PARAMS.values()
+        if param.options
+    ]
+    assert dropdowns.count() == sum(named) and all(named), named
     # The pitch slider, reached by its name as a screen reader user reaches it, moved with keys.
     pitch = page.get_by_role("slider", name=re.compile(r"^pitch")).first
     start = float(pitch.get_attribute("aria-valuenow"))
