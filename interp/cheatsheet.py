@@ -24,7 +24,7 @@ FORMULAS: list[tuple[str, str]] = [
         r"$a(s) = \dfrac{(1-s)\,a_1/w_1 + s\,a_2/w_2}{(1-s)/w_1 + s/w_2}$",
     ),
     (
-        "NDC z (interp.perspective)",
+        "NDC z (interp.perspective; n, f the near and far planes)",
         r"$z_\mathrm{ndc} = \dfrac{f+n}{f-n} - \dfrac{2\,f\,n}{(f-n)\,w}$",
     ),
     (
@@ -60,11 +60,11 @@ NOTATION: list[tuple[str, str, str, str, str, str]] = [
     ("Ek (2019)", "q", "(none)", "z", "0, 1", "attribute c"),
     (
         "rasterization blog",
-        "t_i (weights)",
+        "(none)",
         "(none)",
         "z_view",
         "0, 1, 2",
-        "Direct3D: NDC z in [0, 1]",
+        "t_i: any affine weights; Direct3D: NDC z in [0, 1]",
     ),
     ("OpenGL 4.6", "a, b, c (eq. 14.9)", "(none)", "w", "a, b, c", "texture coords (s, t)!"),
 ]

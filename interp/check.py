@@ -1419,9 +1419,14 @@ QUIZZES: dict[int, list[Question]] = {
             c=("The divide needs positive numbers.", "w is not required to be positive: w != 0."),
         ),
         _q(
-            "Quake's spans of 16 pixels cost about how many divides per pixel?",
+            "On long rows (hundreds of pixels), Quake's spans of 16 pixels cost about how many "
+            "divides per pixel?",
             "a",
-            a=("About 1/16.", "one exact value every 16 pixels along a row (plus one per row)."),
+            a=(
+                "About 1/16.",
+                "one exact value every 16 pixels along a row, plus one to close the row: on "
+                "short rows, like the lab's, that last one counts (0.13 per pixel there).",
+            ),
             b=("16.", "that is the span length, not the cost."),
             c=("None.", "each span starts with a divide."),
         ),

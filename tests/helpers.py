@@ -6,6 +6,7 @@ from pathlib import Path
 
 import nbformat
 import numpy as np
+from matplotlib.collections import LineCollection
 from nbclient import NotebookClient
 
 import interp
@@ -49,3 +50,17 @@ def random_scene(rng: np.random.Generator, n_triangles: int, behind: bool = Fals
     attributes = rng.uniform(0, 1, (len(view), 3))
     triangles = np.arange(3 * n_triangles).reshape(-1, 3)
     return clip, attributes, triangles
+
+
+def shown_arrays(figure):
+    """Every number the figure displays: line data, images, line collections."""
+    for ax in figure.axes:
+        for line in ax.lines:
+            yield np.asarray(line.get_xydata(), float)
+        for image in ax.images:
+            data = image.get_array()
+            yield np.ma.compressed(data) if np.ma.isMaskedArray(data) else np.asarray(data)
+        for collection in ax.collections:
+            if isinstance(collection, LineCollection):
+                for segment in collection.get_segments():
+                    yield np.asarray(segment, float)

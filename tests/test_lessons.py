@@ -155,6 +155,12 @@ def test_build_teacher_writes_notebooks_and_html(tmp_path):
     assert sorted(p.name for p in written) == [SOURCES[0].stem + ".html", SOURCES[0].name]
     executed = source(root / "teacher" / SOURCES[0].name)
     assert editions.verdicts(executed)[0].startswith("✓")
+    # Every figure in the HTML page carries its alt text: the figure's title and key result.
+    page = (root / "teacher" / SOURCES[0].with_suffix(".html").name).read_text()
+    images = re.findall(r"<img [^>]*>", page)
+    assert images and all(re.search(r'alt="[^"]{20,}"', image) for image in images), images
+    assert 'alt="The midpoint mismatch. M, the middle of AB, shows at s = 0.800' in page
+    assert "No description has been provided" not in page  # nbconvert's placeholder
 
 
 def test_generator_command_line(tmp_path, capsys):

@@ -16,8 +16,9 @@ lesson                 apps
 5 attributes           :func:`attributes`, :func:`colour_quad`
 6 checkerboards        :func:`checkerboards`, :func:`checkerboards_outside`, :func:`uv_images`,
                        :func:`outside_view`
-7 triangles            :func:`barycentrics`
-8 GPUs                 :func:`clipping`, :func:`clipping_outside`, :func:`approximations`
+7 triangles            :func:`linear_on_screen`, :func:`barycentrics`
+8 GPUs                 :func:`shader`, :func:`clipping`, :func:`clipping_outside`,
+                       :func:`approximations`
 9 texture filtering    :func:`texture_filtering`, :func:`mipmap_pyramid`
 =====================  =====================================================================
 
@@ -82,9 +83,19 @@ def outside_view() -> App:
     return App(registry.OutsideViewFigure)
 
 
+def linear_on_screen() -> App:
+    """Lesson 7's app: which quantities are planes over the screen (1/w, u/w), which not (w, u)."""
+    return App(registry.LinearOnScreen)
+
+
 def barycentrics() -> App:
     """Lesson 7's app: one triangle coloured by its barycentrics, screen-space and clip-space."""
     return App(registry.Barycentrics)
+
+
+def shader() -> App:
+    """Lesson 8's app: what a fragment shader receives, smooth beside the other qualifiers."""
+    return App(registry.Shader)
 
 
 def clipping() -> App:
@@ -126,7 +137,9 @@ ALL = {
     "uv_images": uv_images,
     "checkerboards_outside": checkerboards_outside,
     "outside_view": outside_view,
+    "linear_on_screen": linear_on_screen,
     "barycentrics": barycentrics,
+    "shader": shader,
     "clipping": clipping,
     "clipping_outside": clipping_outside,
     "approximations": approximations,
@@ -146,10 +159,12 @@ __all__ = [
     "clipping_outside",
     "colour_quad",
     "depth",
+    "linear_on_screen",
     "mipmap_pyramid",
     "outside_view",
     "presentation",
     "projecting_a_line",
+    "shader",
     "st_mapping",
     "texture_filtering",
     "the_problem",

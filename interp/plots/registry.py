@@ -938,10 +938,14 @@ class Approximations(LessonFigure):
         quads8 = int(np.flatnonzero(tess.setting == 8)[0])
         if spans.divides_per_pixel[span16] == 0:
             return "Nothing is drawn: the plane is out of view."
+
+        def texels(error: float) -> str:
+            return "0 (to rounding)" if error < 1e-9 else f"{error:.3g}"
+
         return (
-            f"Spans of 16 pixels: mean error {spans.mean_error[span16]:.3g} texels at "
+            f"Spans of 16 pixels: mean error {texels(spans.mean_error[span16])} texels at "
             f"{spans.divides_per_pixel[span16]:.3f} divides per pixel; 8 x 8 affine quads: "
-            f"{tess.mean_error[quads8]:.3g} texels at {tess.divides_per_pixel[quads8]:.3f}."
+            f"{texels(tess.mean_error[quads8])} texels at {tess.divides_per_pixel[quads8]:.3f}."
         )
 
 
