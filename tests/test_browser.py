@@ -348,7 +348,7 @@ def test_the_readout_is_live_text_that_follows_a_slider_named_for_screen_readers
     assert readout.get_attribute("role") == "status"  # announced when it changes...
     assert readout.get_attribute("aria-live") == "polite"  # ...without interrupting
     before = readout.inner_text()
-    assert before == kernel_readout(registry.Checkerboards)
+    assert before == kernel_readout(registry.CheckerboardsOutside)  # lesson 6's first app
     # Every slider on the page has an accessible name: its description.
     sliders = page.get_by_role("slider")
     assert sliders.count() >= 10
@@ -358,7 +358,7 @@ def test_the_readout_is_live_text_that_follows_a_slider_named_for_screen_readers
     dropdowns = page.locator(f"{VISIBLE} .widget-dropdown select")
     named = [
         page.get_by_role("combobox", name=param.label, exact=True).count()
-        for figure_class in (registry.Checkerboards, registry.UVImagesFigure)
+        for figure_class in (registry.CheckerboardsOutside, registry.UVImagesFigure)
         for param in figure_class.PARAMS.values()
         if param.options
     ]
@@ -374,7 +374,7 @@ def test_the_readout_is_live_text_that_follows_a_slider_named_for_screen_readers
     assert value > start
     # Settled: the text is the kernel's words at the slider's final value.
     deadline = time.monotonic() + 20
-    while readout.inner_text() != kernel_readout(registry.Checkerboards, pitch=value):
+    while readout.inner_text() != kernel_readout(registry.CheckerboardsOutside, pitch=value):
         assert time.monotonic() < deadline, (after, value)
         time.sleep(0.2)
     assert_no_errors(page)
