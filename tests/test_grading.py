@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import html
 import json
-import os
 import re
 import shutil
 import subprocess
@@ -24,9 +23,10 @@ import pytest
 
 from interp import check, editions
 
+from helpers import NBGRADER_BIN, nbgrader, need_nbgrader
+
 ROOT = Path(__file__).resolve().parent.parent
 SOURCES = editions.sources(ROOT)
-NBGRADER_BIN = ROOT / ".venv-nbgrader" / "bin"
 
 #: The lesson the grading loop runs (one keeps it short: it is run once per submission).
 GRADED = ["05_attributes"]
@@ -92,23 +92,6 @@ def test_make_course_builds_and_releases_the_assignment():
     assert "$(NBGRADER_VENV))/bin:$$PATH" in recipe  # nbgrader runs alembic from its bin
 
 
-def nbgrader(*args: str, cwd: Path) -> subprocess.CompletedProcess:
-    # nbgrader runs alembic (for its gradebook) as a subprocess: its venv's bin must be on PATH
-    env = {**os.environ, "PATH": f"{NBGRADER_BIN}{os.pathsep}{os.environ['PATH']}"}
-    env["JUPYTER_CONFIG_DIR"] = str(cwd / ".jupyter")
-    env.pop("MPLBACKEND", None)
-    result = subprocess.run(
-        [str(NBGRADER_BIN / "nbgrader"), *args],
-        cwd=cwd,
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=600,
-    )
-    assert result.returncode == 0, result.stderr[-4000:]
-    return result
-
-
 #: nbgrader's code stub in a released answer cell, with its indentation.
 STUB = re.compile(r"( *)# YOUR CODE HERE\n\1raise NotImplementedError\(\)")
 
@@ -148,10 +131,7 @@ AFFINE = "return a1 + s * (a2 - a1)"  # the classic mistake: interpolating on th
 
 
 def test_nbgrader_grades_a_right_and_a_wrong_submission(tmp_path):
-    if not (NBGRADER_BIN / "nbgrader").exists():
-        if os.environ.get("CI"):
-            pytest.fail(f"CI must have nbgrader in {NBGRADER_BIN} (make test installs it)")
-        pytest.skip(f"no nbgrader in {NBGRADER_BIN} (make test installs it)")
+    need_nbgrader()
     root = tmp_path / "repo"
     (root / "source" / "lessons").mkdir(parents=True)
     for name in GRADED:

@@ -12,10 +12,8 @@
 from __future__ import annotations
 
 import json
-import os
 import re
 import shutil
-import subprocess
 from pathlib import Path
 
 import nbformat
@@ -24,12 +22,11 @@ from nbconvert import HTMLExporter
 
 from interp import check, editions
 
-from helpers import run_lesson
+from helpers import nbgrader, need_nbgrader, run_lesson
 
 ROOT = Path(__file__).resolve().parent.parent
 LESSONS = sorted((ROOT / "lessons").glob("*.ipynb"))
 SOURCES = editions.sources(ROOT)
-NBGRADER = ROOT / ".venv-nbgrader" / "bin" / "nbgrader"
 
 #: The lessons: nine, and the cheat sheet (lesson 10, which has no "Try this" prompts).
 COUNT = 10
@@ -176,24 +173,10 @@ def test_generator_command_line(tmp_path, capsys):
 
 
 def test_nbgrader_generates_the_assignment_from_the_sources(tmp_path):
-    if not NBGRADER.exists():
-        if os.environ.get("CI"):
-            pytest.fail(f"CI must have nbgrader at {NBGRADER} (make test installs it)")
-        pytest.skip(f"no nbgrader at {NBGRADER} (make test installs it)")
+    need_nbgrader()
     shutil.copytree(ROOT / "source", tmp_path / "source")
     shutil.copy(ROOT / "nbgrader_config.py", tmp_path)
-    # nbgrader runs alembic (for its gradebook) as a subprocess: its venv's bin must be on PATH
-    env = {**os.environ, "PATH": f"{NBGRADER.parent}{os.pathsep}{os.environ['PATH']}"}
-    env["JUPYTER_CONFIG_DIR"] = str(tmp_path / "jupyter")
-    result = subprocess.run(
-        [str(NBGRADER), "generate_assignment", "lessons", "--force"],
-        cwd=tmp_path,
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert result.returncode == 0, result.stderr[-3000:]
+    nbgrader("generate_assignment", "lessons", "--force", cwd=tmp_path, timeout=300)
     for path in SOURCES:
         released = source(tmp_path / "release" / "lessons" / path.name)
         student = editions.student_edition(source(path))
