@@ -100,6 +100,7 @@ test: lint $(NBGRADER_DONE) $(NPM_DONE)
 
 bench: $(VENV)/.installed-gl
 	$(BIN)/python -m interp.bench
+	$(BIN)/python -m interp.bench_outside
 
 handouts: $(RUNTIME)
 	$(BIN)/interp-figures --out handouts
