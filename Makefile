@@ -1,70 +1,118 @@
 # Two commands for a fresh clone (see README.md):
-#   make lessons   install everything into .venv and open the lessons in JupyterLab
-#   make test      install everything into .venv and run the whole test suite
+#   make lessons   install the package and what the lessons need into .venv, open them in JupyterLab
+#   make test      install the development tools into .venv too, and run the whole test suite
 # Also: make teacher (the teacher edition: every exercise solved, every prompt answered, run, and
 # as HTML, in teacher/), make student (rewrite lessons/ from source/lessons/), make present (the
-# lessons without code, large, for a projector), make bench (speed figures beside real OpenGL),
-# make bench-browser (every app timed in Chromium), make handouts (print-ready figures), make clean.
+# lessons without code, large, for a projector), make slides (the lessons as live slides), make
+# site (the course website, in build/site/), make course (an nbgrader course with autograded
+# exercises, in course/), make bench (speed figures beside real OpenGL), make bench-browser
+# (every app timed in Chromium), make handouts (print-ready figures), make install (only the
+# install of make lessons), make clean.
 
 PYTHON ?= python3
 VENV   ?= .venv
 BIN    := $(VENV)/bin
-STAMP  := $(VENV)/.installed-dev
+# What is installed into .venv, one stamp per set: the package alone (a student's install), the
+# package with an extra (present: Voila; site: Jupyter Book; gl: moderngl), or everything (dev).
+RUNTIME := $(VENV)/.installed
+STAMP   := $(VENV)/.installed-dev
 # nbgrader lives in a venv of its own: its JupyterLab extension breaks Voila's page (a console
-# error) and would add its menus to the students' JupyterLab. Only the nbgrader test uses it.
+# error) and would add its menus to the students' JupyterLab. It gets the package too (nbgrader
+# runs the notebooks it grades) and nbgitpuller (whose merge the tests try).
 NBGRADER_VENV := .venv-nbgrader
 NBGRADER      := $(NBGRADER_VENV)/bin/nbgrader
+NBGRADER_DONE := $(NBGRADER_VENV)/.installed
+# The npm packages the site and the slides serve themselves: MathJax and reveal.js.
+NPM_DONE := site/node_modules/.package-lock.json
 
 # JupyterLab refuses to start as root unless told; containers often run as root.
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
-.PHONY: lessons teacher student present test bench bench-browser handouts lint clean
+# The website's launch buttons and the slides' server (make site REPO=... HUB=...).
+REPO ?= https://github.com/YOUR-ORG/interp
+HUB  ?= https://HUB
+# The nbgrader course folder: source/ is rewritten by make course, the rest is the teacher's.
+COURSE ?= course
+
+.PHONY: lessons install teacher student present slides site course test bench handouts lint clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-$(STAMP): pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e ".[dev]"
+$(RUNTIME): pyproject.toml | $(BIN)/python
+	$(BIN)/python -m pip install --quiet -e .
 	touch $@
 
-$(NBGRADER):
-	$(PYTHON) -m venv $(NBGRADER_VENV)
-	$(NBGRADER_VENV)/bin/python -m pip install --quiet --upgrade pip
-	$(NBGRADER_VENV)/bin/python -m pip install --quiet "nbgrader>=0.9"
+$(VENV)/.installed-%: pyproject.toml | $(BIN)/python
+	$(BIN)/python -m pip install --quiet -e ".[$*]"
+	touch $@
 
-lessons: $(STAMP)
+$(NBGRADER_DONE): pyproject.toml
+	test -x $(NBGRADER_VENV)/bin/python || $(PYTHON) -m venv $(NBGRADER_VENV)
+	$(NBGRADER_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(NBGRADER_VENV)/bin/python -m pip install --quiet "nbgrader>=0.9" "nbgitpuller>=1.2" -e .
+	touch $@
+
+$(NPM_DONE): site/package.json site/package-lock.json
+	npm ci --prefix site --no-audit --no-fund --loglevel=error
+	touch $@
+
+install: $(RUNTIME)
+
+lessons: $(RUNTIME)
 	$(BIN)/jupyter lab --notebook-dir=lessons $(LAB_ARGS)
 
-teacher: $(STAMP)
+teacher: $(RUNTIME)
 	$(BIN)/python -m interp.editions check || true
 	$(BIN)/python -m interp.editions teacher --out teacher
 
-student: $(STAMP)
+student: $(RUNTIME)
 	$(BIN)/python -m interp.editions student
 
 # Voilà through interp.classroom: kernels of closed tabs are shut down after 5 idle minutes, and
 # at most 30 run at once (python -m interp.classroom --help).
-present: $(STAMP)
+present: $(VENV)/.installed-present
 	INTERP_PRESENTATION=1 $(BIN)/python -m interp.classroom lessons
 
-lint: $(STAMP)
-	$(BIN)/ruff check --no-cache interp tests conftest.py
-	$(BIN)/ruff format --no-cache --check interp tests conftest.py
+# The lessons as reveal.js slides (a slide per ## heading), live, through the same server.
+slides: $(VENV)/.installed-present $(NPM_DONE)
+	$(BIN)/python site/build.py slides --out build/slides
+	INTERP_PRESENTATION=1 JUPYTER_PATH=build/slides/jupyter $(BIN)/python -m interp.classroom \
+		--template=interp-reveal build/slides/lessons
 
-test: lint $(NBGRADER)
+# The course website from the student edition, executed, offline: open build/site/html/index.html.
+site: $(VENV)/.installed-site $(NPM_DONE)
+	$(BIN)/python site/build.py site --out build/site --repo "$(REPO)" --hub "$(HUB)"
+
+# An nbgrader course: $(COURSE)/source/lessons with a graded test cell per exercise, released
+# into $(COURSE)/release/lessons. Grade with nbgrader from $(COURSE) (README: Grading).
+course: $(RUNTIME) $(NBGRADER_DONE)
+	$(BIN)/python -m interp.editions course --out $(COURSE)
+	cd $(COURSE) && PATH="$(abspath $(NBGRADER_VENV))/bin:$$PATH" \
+		nbgrader generate_assignment lessons --force
+
+lint: $(STAMP)
+	$(BIN)/ruff check --no-cache interp tests conftest.py site
+	$(BIN)/ruff format --no-cache --check interp tests conftest.py site
+
+test: lint $(NBGRADER_DONE) $(NPM_DONE)
 	$(BIN)/python -m pytest
 
-bench: $(STAMP)
+bench: $(VENV)/.installed-gl
 	$(BIN)/python -m interp.bench
+	$(BIN)/python -m interp.bench_outside
 
 # Every app in JupyterLab in Chromium: step latency, fps while dragging, settle time, final frame
 # (tests/bench_browser.py --help; --fit measures whether each app fits the screen instead).
+.PHONY: bench-browser
 bench-browser: $(STAMP)
 	$(BIN)/python tests/bench_browser.py
 
-handouts: $(STAMP)
+handouts: $(RUNTIME)
 	$(BIN)/interp-figures --out handouts
 
+# Leaves $(COURSE)/ alone: it holds the students' submissions and their grades.
 clean:
-	rm -rf $(VENV) $(NBGRADER_VENV) .pytest_cache .ruff_cache .hypothesis teacher release gradebook.db
+	rm -rf $(VENV) $(NBGRADER_VENV) .pytest_cache .ruff_cache .hypothesis teacher release \
+		gradebook.db build site/node_modules

@@ -1,7 +1,7 @@
 """The course on one page: the formulas, what is linear on the screen, the notation of each source,
 and the classic mistakes.
 
-One text, two readers: lesson 9 (``09_cheat_sheet.ipynb``) prints it as Markdown (its formulas
+One text, two readers: lesson 10 (``10_cheat_sheet.ipynb``) prints it as Markdown (its formulas
 are the strings below, and ``tests/test_cheatsheet.py`` checks that the notebook holds each one
 and that each formula is right), and ``interp-figures`` draws it as a page of ``handout.pdf``
 with :func:`draw`. The formulas are written in the part of TeX that both MathJax (the notebook)
@@ -24,7 +24,7 @@ FORMULAS: list[tuple[str, str]] = [
         r"$a(s) = \dfrac{(1-s)\,a_1/w_1 + s\,a_2/w_2}{(1-s)/w_1 + s/w_2}$",
     ),
     (
-        "NDC z (interp.perspective)",
+        "NDC z (interp.perspective; n, f the near and far planes)",
         r"$z_\mathrm{ndc} = \dfrac{f+n}{f-n} - \dfrac{2\,f\,n}{(f-n)\,w}$",
     ),
     (
@@ -32,6 +32,11 @@ FORMULAS: list[tuple[str, str]] = [
         r"$\lambda_i = \dfrac{b_i/w_i}{b_0/w_0 + b_1/w_1 + b_2/w_2}$, $a = \sum_i \lambda_i\,a_i$",
     ),
     ("clipping at the near plane z = -w", r"$t_C = \dfrac{z_1 + w_1}{(z_1 + w_1) - (z_2 + w_2)}$"),
+    (
+        "level of detail, u_x = du/dx, N x N texels",
+        r"$\lambda = \log_2\left(N\,\max\left(\sqrt{u_x^2 + v_x^2},\ "
+        r"\sqrt{u_y^2 + v_y^2}\right)\right)$",
+    ),
 ]
 
 #: (quantity, linear on the screen?, why).
@@ -55,11 +60,11 @@ NOTATION: list[tuple[str, str, str, str, str, str]] = [
     ("Ek (2019)", "q", "(none)", "z", "0, 1", "attribute c"),
     (
         "rasterization blog",
-        "t_i (weights)",
+        "(none)",
         "(none)",
         "z_view",
         "0, 1, 2",
-        "Direct3D: NDC z in [0, 1]",
+        "t_i: any affine weights; Direct3D: NDC z in [0, 1]",
     ),
     ("OpenGL 4.6", "a, b, c (eq. 14.9)", "(none)", "w", "a, b, c", "texture coords (s, t)!"),
 ]
@@ -72,11 +77,12 @@ MISTAKES: list[tuple[str, str]] = [
     ("giving a clip vertex its old vertex's attribute", "it needs a_1 + t_C (a_2 - a_1)"),
     ("dividing by w in the vertex shader (w = 1)", "smooth becomes noperspective"),
     ("interpolating NDC z to find where to clip", "clip in clip space: z + w is linear"),
+    ("sampling a texture at one point per pixel", "far away it aliases: filter (a mipmap at λ)"),
 ]
 
 
 def markdown() -> str:
-    """The cheat sheet as the Markdown of lesson 9."""
+    """The cheat sheet as the Markdown of lesson 10."""
     lines = ["## Formulas", "", "| what | formula |", "| --- | --- |"]
     lines += [f"| {what} | {formula} |" for what, formula in FORMULAS]
     lines += [
@@ -114,24 +120,24 @@ def draw(page: Figure) -> None:
         y -= 0.012
 
     heading("Formulas")
-    for what, formula in FORMULAS:
-        y -= 0.042
+    for k, (what, formula) in enumerate(FORMULAS):
+        y -= 0.037 if k else 0.025  # row centres; the formulas are about 0.035 tall
         page.text(0.08, y, what, size="small", va="center")
         page.text(0.42, y, formula, size="large", va="center")
     heading("Linear on the screen?")
     for quantity, yes, why in LINEAR:
-        y -= 0.018
+        y -= 0.016
         page.text(0.08, y, quantity, size="small")
         page.text(0.42, y, yes, size="small", weight="bold")
         page.text(0.5, y, why, size="small")
     heading("Notation across the sources")
     columns = (0.08, 0.22, 0.37, 0.47, 0.62, 0.7)
     for k, row in enumerate([("source", "screen", "object", "depth", "ends", "notes"), *NOTATION]):
-        y -= 0.017
+        y -= 0.016
         for x, cell in zip(columns, row, strict=True):
             page.text(x, y, cell, size="x-small", weight="bold" if k == 0 else "normal")
     heading("Classic mistakes")
     for mistake, fix in MISTAKES:
-        y -= 0.017
+        y -= 0.016
         page.text(0.08, y, mistake, size="x-small")
         page.text(0.5, y, fix, size="x-small")

@@ -32,6 +32,7 @@ Examples
 
 from __future__ import annotations
 
+import math
 import types
 import warnings
 from collections.abc import Callable, Iterator, Sequence
@@ -39,7 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from interp import barycentric, depth, lerp, mistakes, texture
+from interp import barycentric, depth, lerp, mipmap, mistakes, texture
 
 __all__ = [
     "Verdict",
@@ -47,6 +48,7 @@ __all__ = [
     "checker",
     "clip_barycentrics",
     "gap_peak",
+    "lod",
     "ndc_depth",
     "near_clip",
     "perspective_lerp",
@@ -61,6 +63,7 @@ __all__ = [
     "recap_7",
     "recap_8",
     "recap_9",
+    "recap_10",
     "s_from_t",
     "t_from_s",
     "where_m_lands",
@@ -1043,7 +1046,7 @@ def _q(text: str, answer: str, **options: tuple[str, str]) -> Question:
     )
 
 
-#: The recap questions of each lesson (9 is the cheat sheet's review), numbered from 1.
+#: The recap questions of each lesson (10 is the cheat sheet's review), numbered from 1.
 QUIZZES: dict[int, list[Question]] = {
     1: [
         _q(
@@ -1416,14 +1419,86 @@ QUIZZES: dict[int, list[Question]] = {
             c=("The divide needs positive numbers.", "w is not required to be positive: w != 0."),
         ),
         _q(
-            "Quake's spans of 16 pixels cost about how many divides per pixel?",
+            "On long rows (hundreds of pixels), Quake's spans of 16 pixels cost about how many "
+            "divides per pixel?",
             "a",
-            a=("About 1/16.", "one exact value every 16 pixels along a row (plus one per row)."),
+            a=(
+                "About 1/16.",
+                "one exact value every 16 pixels along a row, plus one to close the row: on "
+                "short rows, like the lab's, that last one counts (0.13 per pixel there).",
+            ),
             b=("16.", "that is the span length, not the cost."),
             c=("None.", "each span starts with a divide."),
         ),
     ],
     9: [
+        _q(
+            "One pixel's footprint in the texture is the parallelogram spanned by:",
+            "b",
+            a=(
+                "(du/dx, du/dy) and (dv/dx, dv/dy).",
+                "that pairs the two derivatives of one coordinate; an edge is where one "
+                "screen step takes (u, v): (du/dx, dv/dx) along x, (du/dy, dv/dy) along y.",
+            ),
+            b=(
+                "(du/dx, dv/dx) and (du/dy, dv/dy).",
+                "one pixel step right moves (u, v) by the first, one step up by the second.",
+            ),
+            c=(
+                "(u, v) and (1/w, 1/w).",
+                "those are values at the pixel, not how they change from pixel to pixel.",
+            ),
+        ),
+        _q(
+            "Where the level of detail λ <= 0, the texture is:",
+            "c",
+            a=(
+                "Minified: several texels fall in one pixel.",
+                "that is λ > 0, a footprint longer than one texel.",
+            ),
+            b=("Not drawn.", "λ only chooses how the texture is read, not whether."),
+            c=(
+                "Magnified: a texel covers a pixel or more, and level 0 is read.",
+                "the footprint is at most one texel long.",
+            ),
+        ),
+        _q(
+            "At λ = 2.3, trilinear filtering (GL_LINEAR_MIPMAP_LINEAR) reads:",
+            "a",
+            a=(
+                "Levels 2 and 3, each bilinearly, blended 70% and 30%.",
+                "the two levels around λ, weighted by its fraction 0.3.",
+            ),
+            b=(
+                "Level 2 alone.",
+                "one level is GL_LINEAR_MIPMAP_NEAREST (the nearest level, 2); trilinear "
+                "blends the two levels around λ.",
+            ),
+            c=(
+                "Levels 0 to 3, averaged.",
+                "only the two levels around λ are read.",
+            ),
+        ),
+        _q(
+            "With affine interpolation, λ across one triangle is:",
+            "b",
+            a=(
+                "The same as with perspective-correct interpolation.",
+                "perspective-correct derivatives change from pixel to pixel, as the footprints "
+                "do; affine ones cannot.",
+            ),
+            b=(
+                "Constant: u and v are linear on the screen, so their derivatives are constants.",
+                "so one mip level serves the whole triangle, near part and far part alike.",
+            ),
+            c=(
+                "Always 0.",
+                "λ is the log2 of the footprint in texels: constant on the triangle, but "
+                "not 0 unless the footprint is exactly one texel long.",
+            ),
+        ),
+    ],
+    10: [
         _q(
             "Which is the perspective-correct attribute at screen parameter s?",
             "a",
@@ -1561,8 +1636,8 @@ def _recap_checker(lesson: int) -> Callable[[Callable[[], dict]], Verdict]:
     return checker
 
 
-recap_1, recap_2, recap_3, recap_4, recap_5, recap_6, recap_7, recap_8, recap_9 = (
-    _recap_checker(k) for k in range(1, 10)
+recap_1, recap_2, recap_3, recap_4, recap_5, recap_6, recap_7, recap_8, recap_9, recap_10 = (
+    _recap_checker(k) for k in range(1, 11)
 )
 
 
@@ -1627,6 +1702,167 @@ def near_clip(student: Callable[[float, float, float, float], float]) -> Verdict
                 lambda z1, w1, z2, w2: (z1 - w1) / ((z1 - w1) - (z2 - w2)),
                 "that is where the edge meets the far plane z = w; the near plane is z = -w, "
                 "where z + w = 0.",
+            ),
+        ],
+    )
+
+
+# --- lesson 9: the level of detail ----------------------------------------------------------
+#
+# ``lod(my_lod)`` calls the student's ``my_lod(dudx, dvdx, dudy, dvdy, size)`` on a fixed list of
+# cases, first one to redo by hand, then special ones (magnified, negative derivatives, a
+# footprint turned against the texture) and random ones, and compares each answer with
+# :func:`interp.mipmap.level_of_detail`.
+
+
+def _lod_edges(dudx: float, dvdx: float, dudy: float, dvdy: float) -> tuple[float, float]:
+    """The lengths of the footprint's two edges, in texture coordinates."""
+    return math.hypot(dudx, dvdx), math.hypot(dudy, dvdy)
+
+
+def _lod_taxicab(dudx: float, dvdx: float, dudy: float, dvdy: float) -> tuple[float, float]:
+    return abs(dudx) + abs(dvdx), abs(dudy) + abs(dvdy)
+
+
+def _lod_fwidth(dudx: float, dvdx: float, dudy: float, dvdy: float) -> tuple[float, float]:
+    return abs(dudx) + abs(dudy), abs(dvdx) + abs(dvdy)
+
+
+def _lod_mistake(formula: Callable[[tuple[float, ...], float], float]) -> Callable[..., float]:
+    """A wrong answer written in terms of the four derivatives ``d`` and ``size``."""
+    return lambda *args: formula(args[:4], args[4])
+
+
+def _lod_reference(dudx: float, dvdx: float, dudy: float, dvdy: float, size: float) -> float:
+    return float(mipmap.level_of_detail(dudx, dvdx, dudy, dvdy, size))
+
+
+def _lod_draw(rng: np.random.Generator) -> tuple[float, ...]:
+    scale = 10.0 ** rng.uniform(-3.5, -1)  # from magnified to far minified
+    dudx, dvdx, dudy, dvdy = rng.normal(0, scale, 4)
+    return dudx, dvdx, dudy, dvdy, float(2 ** rng.integers(4, 11))
+
+
+_LOD_CASES = [
+    Case((4 / 256, 0.0, 0.0, 2 / 256, 256.0)),
+    Case((0.01, 0.0, 0.0, 0.01, 100.0)),
+    Case((1 / 512, 0.0, 0.0, 1 / 1024, 256.0), "magnified (λ < 0)"),
+    Case((-2 / 128, 0.0, 0.0, -1 / 128, 128.0), "negative derivatives"),
+    Case((3 / 256, 4 / 256, -4 / 256, 3 / 256, 256.0), "the footprint turned against the texture"),
+    Case((0.001, 0.0, 0.0, 0.05, 64.0), "the longer edge along y"),
+    *_random(11, 21, _lod_draw),
+]
+
+
+def lod(student: Callable[[float, float, float, float, float], float]) -> Verdict:
+    """Lesson 9: ``student(dudx, dvdx, dudy, dvdy, size)`` is OpenGL's level of detail
+    ``λ = log2(max(sqrt(dudx² + dvdx²), sqrt(dudy² + dvdy²)) * size)`` for a texture of
+    ``size x size`` texels (:func:`interp.mipmap.level_of_detail`).
+
+    Examples
+    --------
+    >>> import math
+    >>> def my_lod(dudx, dvdx, dudy, dvdy, size):
+    ...     rho = max(math.hypot(dudx, dvdx), math.hypot(dudy, dvdy)) * size
+    ...     return math.log2(rho)
+    >>> lod(my_lod)
+    ✓ lod: right on all 27 cases, among them magnified (λ < 0), negative derivatives, the \
+footprint turned against the texture and the longer edge along y.
+    >>> lod(lambda dudx, dvdx, dudy, dvdy, size: math.log2(
+    ...     max(abs(dudx), abs(dvdx), abs(dudy), abs(dvdy)) * size))
+    ✗ that is the shortcut OpenGL allows (the largest single derivative, ...
+    >>> lod(lambda dudx, dvdx, dudy, dvdy, size: math.log2(
+    ...     max(math.hypot(dudx, dvdx), math.hypot(dudy, dvdy))))
+    ✗ that is λ for a texture one texel wide: ...
+    """
+
+    def longer(*d: float) -> float:
+        return max(_lod_edges(*d))
+
+    def shorter(*d: float) -> float:
+        return min(_lod_edges(*d))
+
+    return _judge(
+        "lod",
+        student,
+        _lod_reference,
+        _LOD_CASES,
+        "dudx, dvdx, dudy, dvdy, size",
+        [
+            (
+                _lod_mistake(lambda d, size: math.log2(longer(*d))),
+                "that is λ for a texture one texel wide: (u, v) run from 0 to 1 across the "
+                "texture, so multiply the footprint by size to count texels.",
+            ),
+            (
+                _lod_mistake(lambda d, size: math.log(longer(*d) * size)),
+                "that is the natural logarithm; λ is the logarithm base 2 (math.log2): each "
+                "mipmap level halves the texture.",
+            ),
+            (
+                _lod_mistake(lambda d, size: math.log10(longer(*d) * size)),
+                "that is the logarithm base 10; λ is the logarithm base 2 (math.log2): each "
+                "mipmap level halves the texture.",
+            ),
+            (
+                _lod_mistake(lambda d, size: longer(*d) * size),
+                "that is rho, the longer footprint edge in texels; λ = log2(rho), the mipmap level "
+                "whose texels are that large.",
+            ),
+            (
+                _lod_mistake(lambda d, size: math.log2(shorter(*d) * size)),
+                "you took the shorter footprint edge; OpenGL takes the longer one, so that the "
+                "texture never aliases (it blurs along the short edge instead).",
+            ),
+            (
+                _lod_mistake(lambda d, size: math.log2(sum(_lod_edges(*d)) * size)),
+                "you added the two edge lengths; rho is the longer of the two.",
+            ),
+            (
+                _lod_mistake(lambda d, size: math.log2(max(_lod_taxicab(*d)) * size)),
+                "you measured each footprint edge as |du| + |dv|; its length is "
+                "sqrt(du² + dv²) (math.hypot).",
+            ),
+            (
+                _lod_mistake(lambda d, size: math.log2(max(_lod_fwidth(*d)) * size)),
+                "that is the larger of GLSL's fwidth(u) = |du/dx| + |du/dy| and fwidth(v): a "
+                "box around the footprint. OpenGL's rho is the longer edge: the larger of "
+                "sqrt(du/dx² + dv/dx²) and sqrt(du/dy² + dv/dy²).",
+            ),
+            (
+                _lod_mistake(lambda d, size: math.log2(sum(_lod_edges(*d)) / 2 * size)),
+                "you averaged the two edge lengths; rho is the longer of the two.",
+            ),
+            (
+                _lod_mistake(lambda d, size: 2 * _lod_reference(*d, size)),
+                "that is twice λ: the log2 of a squared length. Take the square root of "
+                "du² + dv² first (or halve the logarithm).",
+            ),
+            (
+                _lod_mistake(lambda d, size: math.log2(max(map(abs, d)) * size)),
+                "that is the shortcut OpenGL allows (the largest single derivative, which some "
+                "GPUs use), not the lengths of the footprint's edges: write "
+                "sqrt(du/dx² + dv/dx²) and sqrt(du/dy² + dv/dy²).",
+            ),
+            (
+                lambda dudx, dvdx, dudy, dvdy, size: _lod_reference(dudx, dudy, dvdx, dvdy, size),
+                "you paired du/dx with du/dy. One footprint edge is where one step along x "
+                "takes (u, v): (du/dx, dv/dx); the other is (du/dy, dv/dy).",
+            ),
+            (
+                _lod_mistake(lambda d, size: max(_lod_reference(*d, size), 0.0)),
+                "λ is negative where the texture is magnified (a texel larger than a pixel): "
+                "do not clamp it at 0; OpenGL reads its sign to choose the magnification filter.",
+            ),
+            (
+                _lod_mistake(lambda d, size: math.floor(_lod_reference(*d, size))),
+                "λ is not rounded down: trilinear filtering blends the two levels around it "
+                "by its fraction.",
+            ),
+            (
+                _lod_mistake(lambda d, size: round(_lod_reference(*d, size))),
+                "λ is not rounded: trilinear filtering blends the two levels around it by its "
+                "fraction.",
             ),
         ],
     )

@@ -170,8 +170,16 @@ def _clip_triangles(
     positions = _normalized(clip[triangles])
     a = attributes[triangles]
     soup = _Soup(np.concatenate([positions, a * positions[:, :, 3:], a], axis=2), np.arange(len(a)))
+    # Trivial accept and reject, like Cohen and Sutherland's outcodes: a triangle inside every
+    # plane comes through every pass unchanged, and one with all three vertices outside the
+    # same plane is cut away whole. Only the rest go through the passes.
+    inside = positions @ PLANES.T >= 0  # (T, 3, 6): the passes' own test, plane by plane
+    accept = inside.all(axis=(1, 2))
+    reject = (~inside.any(axis=1)).any(axis=1)
+    cut = soup.take(~accept & ~reject)
     for plane in PLANES:
-        soup = _clip_against(soup, plane)
+        cut = _clip_against(cut, plane)
+    soup = _in_draw_order(soup.take(accept), cut)
     in_front = np.all(soup.vertices[:, :, 3] > 0, axis=1)  # drops degenerate pieces at the eye
     vertices, source = soup.vertices[in_front], soup.source[in_front]
     # Every vertex is now inside, up to rounding: make that exact, so that no rounding (nor a
@@ -200,6 +208,13 @@ class _Soup:
 
     def take(self, index: np.ndarray) -> _Soup:
         return _Soup(self.vertices[index], self.source[index])
+
+
+def _in_draw_order(a: _Soup, b: _Soup) -> _Soup:
+    """The triangles of both, in the order of the input triangles they came from."""
+    source = np.concatenate([a.source, b.source])
+    order = np.argsort(source, kind="stable")  # a triangle's pieces stay in their order
+    return _Soup(np.concatenate([a.vertices, b.vertices])[order], source[order])
 
 
 def _normalized(clip: np.ndarray) -> np.ndarray:

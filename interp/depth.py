@@ -74,8 +74,9 @@ def depth_resolution(
 
     One step of the stored window z (the float32 spacing there, or ``2**-24`` for a 24-bit
     fixed-point buffer) divided by how fast window z changes with w,
-    ``d z_window / d w = far near / ((far - near) w**2)``. It grows like ``w**2 / near``: halve
-    ``near`` and every depth gets twice as coarse.
+    ``d z_window / d w = far near / ((far - near) w**2)``. For ``fixed24`` it grows like
+    ``w**2 / near``: halve ``near`` and every depth gets about twice as coarse. ``float32`` is
+    the same wherever window z >= 1/2 and finer only in front of that (:func:`depth_step`).
 
     Parameters
     ----------

@@ -3,9 +3,10 @@
 ``source/lessons/NN_*.ipynb`` is the only copy a teacher edits (nbgrader's course layout: the
 assignment is called ``lessons``). Each source lesson carries
 
-- its exercise in one code cell marked as nbgrader's "autograded answer" (cell metadata
-  ``nbgrader.solution``), the solution between ``### BEGIN SOLUTION`` and ``### END SOLUTION``
-  lines, followed by the call to its checker in :mod:`interp.check`;
+- each of its exercises (the lesson's function, its recap quiz, lesson 7's worked example) in
+  one code cell marked as nbgrader's "autograded answer" (cell metadata ``nbgrader.solution``),
+  the solution between ``### BEGIN SOLUTION`` and ``### END SOLUTION`` lines, followed by the
+  call to its checker in :mod:`interp.check`;
 - under the figure of every "Try this" list, a markdown cell marked as nbgrader's "manually
   graded answer", holding a written answer to each prompt between the same markers.
 
@@ -16,13 +17,22 @@ From it this module makes
   nbgrader's metadata dropped, cell ids kept;
 - the **teacher edition**, built into ``teacher/`` by ``make teacher``: every cell kept, the
   markers removed, each notebook run top to bottom (with the static ``inline`` backend, so that
-  its figures are pictures) and saved with its outputs, beside one HTML page per lesson.
+  its figures are pictures) and saved with its outputs, beside one HTML page per lesson;
+- the **course edition**, for grading with nbgrader (``make course``): the source, with each
+  exercise's checker call moved out of the answer cell into a locked, graded test cell of its own
+  (``assert verdict, verdict``: a checker's verdict is truthy when the function is right, and its
+  message becomes the feedback), written as nbgrader's ``source/lessons/`` in a course folder;
+- the **slides edition**, for ``make slides``: the student edition with reveal.js slide types in
+  each cell's ``slideshow`` metadata, derived from the lesson's structure (see
+  :func:`slides_edition`), so that the slides follow the lessons.
 
 Command line (from the repository's root)::
 
     python -m interp.editions student    # write lessons/ from source/lessons/
     python -m interp.editions check      # exit 1 if lessons/ differs from what it would write
     python -m interp.editions teacher    # build teacher/: executed notebooks and HTML
+    python -m interp.editions course --out course    # an nbgrader course folder
+    python -m interp.editions slides --out build/slides/lessons    # notebooks for the slides
 """
 
 from __future__ import annotations
@@ -249,18 +259,238 @@ def build_teacher(root: Path, out: Path, html: bool = True) -> list[Path]:
         written.append(target)
         if html:
             page, _ = HTMLExporter().from_notebook_node(notebook)
-            target.with_suffix(".html").write_text(page)
+            target.with_suffix(".html").write_text(with_alt_text(page, notebook))
             written.append(target.with_suffix(".html"))
         print(f"{path.name}: {len(verdicts(notebook))} exercise solved, no error", flush=True)
     return written
 
 
+def with_alt_text(page: str, notebook: nbformat.NotebookNode) -> str:
+    """``page``, nbconvert's HTML of ``notebook``, with each figure's alt text (which the apps
+    put in their outputs' metadata, and nbconvert's template leaves out) on its ``<img>``.
+
+    Examples
+    --------
+    >>> output = nbformat.v4.new_output(
+    ...     "display_data", {"image/png": "iVBO"}, metadata={"image/png": {"alt": "A & B"}})
+    >>> notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(outputs=[output])])
+    >>> with_alt_text('<img alt="No description" src="data:image/png;base64,iVBO">', notebook)
+    '<img alt="A &amp; B" src="data:image/png;base64,iVBO">'
+    """
+    from html import escape
+
+    alt = {
+        output.data["image/png"].strip(): output.metadata["image/png"]["alt"]
+        for cell in notebook.cells
+        for output in cell.get("outputs", [])
+        if "image/png" in output.get("data", {})
+        and "alt" in output.get("metadata", {}).get("image/png", {})
+    }
+
+    def labelled(match: re.Match) -> str:
+        text = alt.get(match["data"].strip())
+        if text is None:
+            return match[0]
+        others = re.sub(r'\s*\balt="[^"]*"', "", match["others"])  # nbconvert's placeholder
+        return f'<img alt="{escape(text)}"{others} src="data:image/png;base64,{match["data"]}"'
+
+    return re.sub(
+        r'<img(?P<others>[^>]*?)\s+src="data:image/png;base64,(?P<data>[^"]*)"', labelled, page
+    )
+
+
+#: Points of each exercise's graded test cell (a list of prompts earns one point per prompt).
+EXERCISE_POINTS = 5
+
+#: Ends an exercise cell in the source: the call to its checker on the student's function.
+CHECKER_CALL = re.compile(r"\n+check\.(\w+)\((\w+)\)\s*$")
+
+#: nbgrader's configuration for a course folder made by :func:`write_course` (written once: the
+#: teacher may add to it).
+COURSE_CONFIG = f'''"""nbgrader's configuration for this course folder, written by `make course`
+(python -m interp.editions course), which rewrites source/lessons/ and leaves the rest alone.
+
+From this folder: nbgrader generate_assignment lessons; copy each student's notebooks into
+submitted/STUDENT/lessons/; nbgrader autograde lessons; nbgrader generate_feedback lessons.
+"""
+
+c = get_config()  # noqa: F821 (nbgrader provides it)
+c.CourseDirectory.course_id = "interp"
+c.ClearSolutions.code_stub = {{"python": {CODE_STUB!r}}}
+c.ClearSolutions.text_stub = "YOUR ANSWER HERE"
+# Autograding runs each lesson top to bottom: its figures take a few seconds a cell.
+c.Execute.timeout = 300
+'''
+
+
+def graded_test(exercise: nbformat.NotebookNode) -> nbformat.NotebookNode:
+    """The locked, graded test cell of an exercise: its checker's call, asserted.
+
+    Examples
+    --------
+    >>> source = "def f(x):\\n    return x\\n\\n\\ncheck.project(f)"
+    >>> cell = nbformat.v4.new_code_cell(source, id="01-07")
+    >>> test = graded_test(cell)
+    >>> print(test.source)
+    # Graded by nbgrader: the checker must say ✓ (this cell is locked).
+    verdict = check.project(f)
+    assert verdict, verdict
+    verdict
+    >>> test.id, test.metadata.nbgrader["grade_id"], test.metadata.nbgrader["points"]
+    ('01-07-test', 'check-01-07', 5)
+    """
+    match = CHECKER_CALL.search(exercise.source)
+    if match is None:
+        raise ValueError(f"an exercise must end with its checker call:\n{exercise.source}")
+    name, function = match.groups()
+    source = (
+        "# Graded by nbgrader: the checker must say ✓ (this cell is locked).\n"
+        f"verdict = check.{name}({function})\n"
+        "assert verdict, verdict\n"
+        "verdict"
+    )
+    grading = {
+        "grade": True,
+        "grade_id": f"check-{exercise.id}",
+        "locked": True,
+        "points": EXERCISE_POINTS,
+        "schema_version": 3,
+        "solution": False,
+        "task": False,
+    }
+    return nbformat.v4.new_code_cell(
+        source, id=f"{exercise.id}-test", metadata={"nbgrader": grading}
+    )
+
+
+def course_edition(source: nbformat.NotebookNode) -> nbformat.NotebookNode:
+    """The lesson as an nbgrader assignment: each exercise an answer cell (the function, its
+    solution between the markers) followed by its graded test cell; everything else as in the
+    source (the prompts' answer cells are nbgrader's manually graded answers already).
+
+    Examples
+    --------
+    >>> exercise = "def f(x):\\n    ### BEGIN SOLUTION\\n    return x\\n    ### END SOLUTION\\n\\n"
+    >>> exercise += "\\ncheck.project(f)"
+    >>> nb = nbformat.v4.new_notebook()
+    >>> nb.cells = [nbformat.v4.new_code_cell(exercise, id="01-07", metadata={"nbgrader": {
+    ...     "solution": True, "grade": False, "grade_id": "exercise-01-07", "locked": False}})]
+    >>> answer, test = course_edition(nb).cells
+    >>> print(answer.source)
+    def f(x):
+        ### BEGIN SOLUTION
+        return x
+        ### END SOLUTION
+    >>> test.source.splitlines()[1:3]
+    ['verdict = check.project(f)', 'assert verdict, verdict']
+    """
+    course = copy.deepcopy(source)
+    course.cells = []
+    for cell in source.cells:
+        cell = copy.deepcopy(cell)
+        if cell.cell_type == "code":
+            cell.outputs, cell.execution_count = [], None
+        course.cells.append(cell)
+        if is_exercise(cell):
+            test = graded_test(cell)
+            cell.source = CHECKER_CALL.sub("", cell.source)
+            course.cells.append(test)
+    return course
+
+
+def write_course(root: Path, out: Path) -> list[Path]:
+    """Make ``out`` an nbgrader course folder: ``source/lessons/`` from the lessons' sources
+    (rewritten, stale lessons removed) and ``nbgrader_config.py`` (only if there is none).
+    Everything else in ``out`` (release, submissions, grades) is left alone."""
+    lessons = Path(out) / "source" / "lessons"
+    lessons.mkdir(parents=True, exist_ok=True)
+    names = {path.name for path in sources(root)}
+    for stale in lessons.glob("*.ipynb"):
+        if stale.name not in names:
+            stale.unlink()
+    written = []
+    for path in sources(root):
+        target = lessons / path.name
+        target.write_text(text(course_edition(nbformat.read(path, as_version=4))))
+        written.append(target)
+    config = Path(out) / "nbgrader_config.py"
+    if not config.exists():
+        config.write_text(COURSE_CONFIG)
+        written.append(config)
+    return written
+
+
+#: What starts a new slide: a level-2 heading (a level-1 heading is the title slide).
+SLIDE_HEADING = re.compile(r"^#{1,2} ")
+
+
+def slides_edition(student: nbformat.NotebookNode) -> nbformat.NotebookNode:
+    """The student edition with reveal.js slide types (cell metadata ``slideshow.slide_type``):
+
+    - the title and each ``##`` heading start a slide;
+    - each figure (an app) starts a sub-slide, below the prose that introduces it, so that a
+      figure with its sliders has the screen to itself; prose that goes on after a figure, in
+      the same section, is the next sub-slide;
+    - the set-up cell and the exercise's code (its verdict means nothing without the code,
+      which slides do not show) are skipped;
+    - everything else stays on the slide before it.
+
+    Examples
+    --------
+    >>> nb = nbformat.v4.new_notebook()
+    >>> nb.cells = [nbformat.v4.new_markdown_cell("# Title"),
+    ...             nbformat.v4.new_code_cell("%matplotlib widget"),
+    ...             nbformat.v4.new_markdown_cell("## A section"),
+    ...             nbformat.v4.new_code_cell("interp.t_from_s(0.5, 1, 3)"),
+    ...             nbformat.v4.new_code_cell("apps.st_mapping()"),
+    ...             nbformat.v4.new_markdown_cell("More about it."),
+    ...             nbformat.v4.new_code_cell("def f():\\n    " + CODE_STUB.splitlines()[1])]
+    >>> [c.metadata.slideshow["slide_type"] for c in slides_edition(nb).cells]
+    ['slide', 'skip', 'slide', '-', 'subslide', 'subslide', 'skip']
+    """
+    slides = copy.deepcopy(student)
+    setup = next((c for c in slides.cells if c.cell_type == "code"), None)
+    after_figure = False
+    for cell in slides.cells:
+        code = cell.cell_type == "code"
+        if not code and SLIDE_HEADING.match(cell.source):
+            kind, after_figure = "slide", False
+        elif cell is setup or (code and "raise NotImplementedError" in cell.source):
+            kind = "skip"
+        elif code and re.match(r"apps\.\w+\(", cell.source.strip()):
+            kind, after_figure = "subslide", True
+        elif not code and after_figure:
+            kind, after_figure = "subslide", False
+        else:
+            kind = "-"
+        cell.metadata["slideshow"] = {"slide_type": kind}
+    return slides
+
+
+def write_slides(root: Path, out: Path) -> list[Path]:
+    """Write the slides edition of every lesson into ``out``; return the files written."""
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for path in sources(root):
+        target = out / path.name
+        student = student_edition(nbformat.read(path, as_version=4))
+        target.write_text(text(slides_edition(student)))
+        written.append(target)
+    return written
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    """``python -m interp.editions {student,check,teacher} [--root DIR] [--out DIR]``."""
+    """``python -m interp.editions COMMAND [--root DIR] [--out DIR]``; see the module's doc."""
     parser = argparse.ArgumentParser(prog="python -m interp.editions", description=__doc__)
-    parser.add_argument("command", choices=["student", "check", "teacher"])
+    parser.add_argument("command", choices=["student", "check", "teacher", "course", "slides"])
     parser.add_argument("--root", type=Path, default=Path.cwd(), help="the repository's root")
-    parser.add_argument("--out", type=Path, default=None, help="teacher/: where to build")
+    parser.add_argument(
+        "--out",
+        type=Path,
+        default=None,
+        help="where to build (teacher/, course/, build/slides/lessons/)",
+    )
     args = parser.parse_args(argv)
     if not sources(args.root):
         parser.error(f"no source lessons in {args.root / 'source' / 'lessons'}")
@@ -273,6 +503,12 @@ def main(argv: Sequence[str] | None = None) -> int:
             print("lessons/ is out of date; run `python -m interp.editions student`:", *stale)
             return 1
         print("lessons/ matches source/lessons/")
+    elif args.command == "course":
+        for path in write_course(args.root, args.out or args.root / "course"):
+            print(f"wrote {path}")
+    elif args.command == "slides":
+        for path in write_slides(args.root, args.out or args.root / "build" / "slides" / "lessons"):
+            print(f"wrote {path}")
     else:
         build_teacher(args.root, args.out or args.root / "teacher")
     return 0

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import io
 import json
 import os
 import signal
@@ -39,6 +40,8 @@ __all__ = ["FIGURES", "FORMATS", "NARROW", "WIDE", "main", "render", "resolve_pa
 
 FORMATS = ("pdf", "svg", "png")
 A4 = (8.27, 11.69)
+#: The handout's title, on its cover and in its metadata.
+HANDOUT_TITLE = "Perspective-correct interpolation"
 MAX_DPI = 1200
 #: Largest --params file read, in bytes.
 MAX_PARAMS_FILE = 1 << 20
@@ -122,25 +125,76 @@ def resolve_params(
     return params
 
 
-def _metadata(fmt: str) -> dict[str, object]:
-    """No timestamps, unless SOURCE_DATE_EPOCH asks for one (matplotlib then uses it)."""
-    if os.environ.get("SOURCE_DATE_EPOCH"):
-        return {}
-    return {"pdf": {"CreationDate": None}, "svg": {"Date": None}}.get(fmt, {})
+def _metadata(fmt: str, title: str = "", description: str = "") -> dict[str, object]:
+    """No timestamps, unless SOURCE_DATE_EPOCH asks for one (matplotlib then uses it); the
+    figure's title and alt text where the format has a place for them (a PDF's Title and
+    Subject, an SVG's Dublin Core title and description, a PNG's Title and Description)."""
+    metadata: dict[str, object] = {}
+    if not os.environ.get("SOURCE_DATE_EPOCH"):
+        metadata |= {"pdf": {"CreationDate": None}, "svg": {"Date": None}}.get(fmt, {})
+    if title:
+        metadata["Title"] = title
+    if description:
+        metadata[{"pdf": "Subject"}.get(fmt, "Description")] = description
+    return metadata
+
+
+def _svg_with_alt_text(svg: str, title: str, description: str) -> str:
+    """The SVG with ``<title>`` and ``<desc>`` as the root's first children, and the root
+    marked as one image labelled by them: what screen readers announce for an SVG.
+
+    Examples
+    --------
+    >>> svg = _svg_with_alt_text('<svg width="1">\\n<g/></svg>', "A & B", "shows <s>")
+    >>> print(svg.replace("><", ">\\n<"))
+    <svg width="1" role="img" aria-labelledby="title desc">
+    <title id="title">A &amp; B</title>
+    <desc id="desc">shows &lt;s&gt;</desc>
+    <g/>
+    </svg>
+    """
+    from html import escape
+
+    start = svg.index("<svg")
+    end = svg.index(">", start)
+    label = (
+        f'<title id="title">{escape(title, quote=False)}</title>'
+        f'<desc id="desc">{escape(description, quote=False)}</desc>'
+    )
+    return svg[:end] + ' role="img" aria-labelledby="title desc">' + label + svg[end + 1 :]
 
 
 def render(figure_class: type[LessonFigure], params: dict[str, object]) -> matplotlib.figure.Figure:
     """Draw one lesson figure at its print size, off-screen, with the package style."""
+    return _draw(figure_class, params)[0]
+
+
+def _draw(
+    figure_class: type[LessonFigure], params: dict[str, object]
+) -> tuple[matplotlib.figure.Figure, str]:
+    """:func:`render`'s figure, and its alt text (see :func:`alt_text`)."""
     from matplotlib.figure import Figure
 
     with plots.styled():
         figure = Figure(figsize=figure_class.print_size, layout="constrained")
         try:
-            figure_class(figure, **params)
+            plot = figure_class(figure, **params)
         except (ValueError, TypeError) as error:
             raise UsageError(f"{figure_class.name}: {error}") from None
         _settle_layout(figure)
-    return figure
+    return figure, alt_text(figure_class, plot.readout())
+
+
+def alt_text(figure_class: type[LessonFigure], readout: str = "") -> str:
+    """What a figure shows, for readers who cannot see it: its caption, then its key result
+    at the parameters drawn (the apps' live text readout).
+
+    Examples
+    --------
+    >>> alt_text(FIGURES["st-mapping"], "The gap peaks at s = 0.634.")[-27:]
+    'The gap peaks at s = 0.634.'
+    """
+    return f"{figure_class.caption} {readout}".strip()
 
 
 def _settle_layout(figure: matplotlib.figure.Figure) -> None:
@@ -244,12 +298,26 @@ def _os_error(error: BaseException | None) -> OSError | None:
     return None
 
 
-def save(figure: matplotlib.figure.Figure, name: str, fmt: str, dpi: int, stage: Staging) -> Path:
-    """Stage ``figure`` as ``name`` in ``fmt``, deterministically."""
+def save(
+    figure: matplotlib.figure.Figure,
+    name: str,
+    fmt: str,
+    dpi: int,
+    stage: Staging,
+    title: str = "",
+    alt: str = "",
+) -> Path:
+    """Stage ``figure`` as ``name`` in ``fmt``, deterministically, carrying ``title`` and the
+    alt text ``alt`` (:func:`_metadata`; in an SVG also as ``<title>`` and ``<desc>``)."""
 
     def write(path: str) -> None:
         with plots.styled():
-            figure.savefig(path, format=fmt, dpi=dpi, metadata=_metadata(fmt))
+            if fmt != "svg":
+                figure.savefig(path, format=fmt, dpi=dpi, metadata=_metadata(fmt, title, alt))
+                return
+            buffer = io.StringIO()
+            figure.savefig(buffer, format=fmt, dpi=dpi, metadata=_metadata(fmt, title, alt))
+            Path(path).write_text(_svg_with_alt_text(buffer.getvalue(), title, alt))
 
     return stage.write(name, write)
 
@@ -261,9 +329,9 @@ def write_handout(stage: Staging, chosen: Sequence[str], params: dict[str, dict]
     from matplotlib.figure import Figure
 
     def pages(path: str) -> None:
-        with plots.styled(), PdfPages(path, metadata=_metadata("pdf")) as pdf:
+        with plots.styled(), PdfPages(path, metadata=_metadata("pdf", HANDOUT_TITLE)) as pdf:
             cover = Figure(figsize=A4)
-            cover.text(0.1, 0.9, "Perspective-correct interpolation", fontsize=20, weight="bold")
+            cover.text(0.1, 0.9, HANDOUT_TITLE, fontsize=20, weight="bold")
             cover.text(0.1, 0.86, "Figures from the interp lessons", fontsize=12)
             for k, figure_class in enumerate(FIGURES[n] for n in chosen):
                 y = 0.8 - 0.055 * k
@@ -359,10 +427,11 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _list() -> None:
-    for figure_class in FIGURES.values():
-        print(f"{figure_class.name:<18} {figure_class.description} (lesson {figure_class.lesson})")
-        for name, param in figure_class.PARAMS.items():
-            print(f"{'':<20}{name}={param.default}  in {param.range}")
+    width = max(len(name) for name in FIGURES)
+    for f in FIGURES.values():
+        print(f"{f.name:<{width}} {f.description} (lesson {f.lesson})")
+        for name, param in f.PARAMS.items():
+            print(f"{'':<{width + 2}}{name}={param.default}  in {param.range}")
 
 
 @contextlib.contextmanager
@@ -409,7 +478,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 )
             params = resolve_params(chosen, args.settings, args.params)
             started = time.perf_counter()
-            figures = {n: render(FIGURES[n], params[n]) for n in chosen}  # all checked first
+            figures = {n: _draw(FIGURES[n], params[n]) for n in chosen}  # all checked first
             out = Path(args.out)
             if out.exists() and not out.is_dir():
                 raise UsageError(f"--out {out} exists and is not a folder")
@@ -419,9 +488,13 @@ def main(argv: Sequence[str] | None = None) -> int:
                 raise UsageError(f"cannot create --out {out}: {error.strerror}") from None
             formats = list(dict.fromkeys(args.formats))
             with Staging(out) as stage:
-                for name, figure in figures.items():
+                for name, (figure, alt) in figures.items():
                     start = time.perf_counter()
-                    paths = [save(figure, f"{name}.{fmt}", fmt, args.dpi, stage) for fmt in formats]
+                    title = FIGURES[name].title
+                    paths = [
+                        save(figure, f"{name}.{fmt}", fmt, args.dpi, stage, title, alt)
+                        for fmt in formats
+                    ]
                     shown = paths[0] if len(paths) == 1 else out / f"{name}.{{{','.join(formats)}}}"
                     print(f"{name:<18} {shown}  {time.perf_counter() - start:.2f} s", flush=True)
                 if not args.no_handout:

@@ -217,3 +217,129 @@ def render(
         return gl.draw(clip, attributes, triangles)
     finally:
         gl.release()
+
+
+# ---------------------------------------------------------------- textures: mipmaps, trilinear
+
+_TEXTURED_FRAGMENT = """
+#version 330
+{qualifier} in vec4 value;
+uniform sampler2D image;
+layout(location = 0) out vec4 out_attribute;  // (texture(image, uv).r, u, v, 0)
+layout(location = 1) out vec4 out_info;
+void main() {{
+    out_attribute = vec4(texture(image, value.xy).r, value.xy, 0.0);
+    out_info = vec4(float(gl_PrimitiveID), gl_FragCoord.z, 1.0, 0.0);
+}}
+"""
+
+
+class TexturedRenderer(Renderer):
+    """A :class:`Renderer` whose pixels show a mipmapped texture, sampled by GLSL ``texture()``
+    at the interpolated (u, v), with ``GL_LINEAR_MIPMAP_LINEAR`` (trilinear) minification,
+    ``GL_LINEAR`` magnification and ``GL_REPEAT`` wrapping: the counterpart of
+    :func:`interp.mipmap.sample_trilinear`.
+
+    Parameters
+    ----------
+    width, height : int
+        Image size.
+    levels : list of (n, n) arrays
+        The mipmap pyramid, e.g. from :func:`interp.mipmap.mipmap`; uploaded as one-channel
+        float32 levels (``GL_R32F``).
+    mode : {"perspective", "affine"}
+        How (u, v) are interpolated.
+    generate : bool
+        Upload only ``levels[0]`` and let ``glGenerateMipmap`` make the rest.
+
+    Notes
+    -----
+    :meth:`draw` returns a :class:`GLImage` whose ``values`` hold, per pixel, the filtered
+    texture value and then u and v.
+
+    Examples
+    --------
+    >>> from interp.mipmap import checker_texture, mipmap
+    >>> gl = TexturedRenderer(4, 4, mipmap(checker_texture(2, 4)))
+    >>> image = gl.draw([[-1, -1, 0, 1], [3, -1, 0, 1], [-1, 3, 0, 1]],
+    ...                 [[0, 0], [2, 0], [0, 2]], [[0, 1, 2]])
+    >>> image.values[..., 0]       # one texel per pixel: level 0, sampled at texel centres
+    array([[1., 1., 0., 0.],
+           [1., 1., 0., 0.],
+           [0., 0., 1., 1.],
+           [0., 0., 1., 1.]], dtype=float32)
+    >>> gl.release()
+    """
+
+    def __init__(
+        self,
+        width: int,
+        height: int,
+        levels: list[np.ndarray],
+        mode: str = "perspective",
+        generate: bool = False,
+    ) -> None:
+        import moderngl
+
+        mode = _checks.choice(mode, "mode", ("perspective", "affine"))
+        super().__init__(width, height, mode)
+        qualifier = _QUALIFIERS[mode]
+        self.program.release()
+        self.program = self.ctx.program(
+            vertex_shader=_VERTEX.format(qualifier=qualifier, position=_POSITIONS[False]),
+            fragment_shader=_TEXTURED_FRAGMENT.format(qualifier=qualifier),
+        )
+        base = np.ascontiguousarray(levels[0], dtype="f4")
+        self.texture = self.ctx.texture(base.shape[::-1], 1, base.tobytes(), dtype="f4")
+        self.texture.build_mipmaps()  # glGenerateMipmap: allocates every level
+        if not generate:
+            for k, level in enumerate(levels[1:], start=1):
+                self.texture.write(np.ascontiguousarray(level, dtype="f4").tobytes(), level=k)
+        self.texture.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
+        self.texture.repeat_x = self.texture.repeat_y = True
+
+    def level(self, k: int) -> np.ndarray:
+        """Level k of the texture as OpenGL holds it, read back (row j: v in [j, j+1)/n)."""
+        n = max(self.texture.width >> k, 1)
+        return np.frombuffer(self.texture.read(level=k), dtype="f4").reshape(n, n)
+
+    def render(self, clip: np.ndarray, attributes: np.ndarray, triangles: np.ndarray) -> None:
+        """Bind the texture, then draw as :meth:`Renderer.render`."""
+        self.texture.use(location=0)
+        super().render(clip, attributes, triangles)
+
+    def release(self) -> None:
+        """Free the GPU objects."""
+        self.texture.release()
+        super().release()
+
+
+def render_textured(
+    clip: object,
+    uv: object,
+    triangles: object,
+    width: int,
+    height: int,
+    levels: list[np.ndarray],
+    mode: str = "perspective",
+    generate: bool = False,
+) -> GLImage:
+    """Draw once with a mipmapped, trilinear texture: the counterpart of
+    :func:`interp.mipmap.filtering_views`. Arguments as :class:`TexturedRenderer` and
+    :func:`render`; ``values[..., 0]`` is the filtered texture.
+
+    Examples
+    --------
+    >>> import interp
+    >>> from interp.mipmap import checker_texture, mipmap
+    >>> scene = interp.ground_plane(height=1.0, pitch=20.0, size=4.0)
+    >>> image = render_textured(scene.clip, scene.uv, scene.triangles, 64, 48,
+    ...                         mipmap(checker_texture(8)))
+    >>> bool(image.covered.any()), float(image.values[..., 0].max()) <= 1.0
+    (True, True)
+    """
+    gl = TexturedRenderer(width, height, levels, mode, generate)
+    try:
+        return gl.draw(clip, uv, triangles)
+    finally:
+        gl.release()

@@ -10,6 +10,8 @@ The pipeline, one function each:
 4. Interpolation (:func:`interpolate`): the attribute at each visible pixel from its screen-space
    barycentrics, affinely or perspective-correctly (see :mod:`interp.barycentric`).
 
+:func:`rasterize` does all four, the last two on the image in bands of rows (see its Notes).
+
 Window coordinates are snapped to 1/256 pixel, as GPUs do, and the edge functions are evaluated
 in exact integer arithmetic there. A fill rule decides pixel centres exactly on an edge, so two
 triangles sharing an edge never both draw a pixel, and never both skip one. OpenGL leaves the
@@ -36,6 +38,9 @@ SUBPIXELS = 256
 MODES = ("perspective", "affine", "subdivided")
 #: Bits of the fixed-point depth the depth test compares by default (GL's buffers have 24).
 DEPTH_BITS = 40
+#: Pixels depth-tested and interpolated together: a band of whole image rows (at least one).
+#: Small enough that every temporary fits in the CPU's cache and is recycled by the allocator.
+BAND = 1 << 14
 #: Most fragments depth-tested at once: bounds memory however much the triangles overlap.
 CHUNK = 1 << 22
 #: Most attribute values interpolated at once: bounds memory however large the image.
@@ -100,14 +105,20 @@ def rasterize(
     one triangle at a time: its bounding box, the three edge functions at every pixel centre,
     ``if z < depth[y, x]``, then ``a/w`` and ``1/w`` interpolated and divided. It is proven to
     draw exactly the same pixels as this function. This one is the same algorithm arranged for
-    numpy, to run at the speed of a slider, and differs in three ways. It never tests a pixel
+    numpy, to run at the speed of a slider, and differs in four ways. It never tests a pixel
     that is outside: on each pixel row a triangle covers one span of columns, and the span's
     ends are solved from the edge functions by integer ceiling division. It depth-tests all
     triangles at once: each fragment's depth, in fixed point, and its draw order are packed
     into one integer key, and ``np.minimum.at`` keeps the smallest key per pixel, which is the
-    nearest fragment, the first drawn among equals (``GL_LESS``). And it depth-tests and
-    interpolates in chunks of fragments, so that memory stays bounded however much the
-    triangles overlap and however large the image.
+    nearest fragment, the first drawn among equals (``GL_LESS``). It interpolates along rows:
+    ``a/w`` and ``1/w`` (or, affinely, ``a``) are planes over the screen, so on the row a
+    triangle's span lies on each is a line, a value at the span's first column plus a step per
+    column, and each pixel evaluates the line of the triangle that won it. And, like llvmpipe
+    with its tiles, it works through the image in bands of rows, ``BAND`` pixels at a time, so
+    that its temporaries stay small (within a band the fragments are depth-tested ``CHUNK`` at
+    a time): memory stays bounded however much the triangles overlap and however large the
+    image, and the temporaries stay in the CPU's cache and are recycled by the allocator
+    instead of being handed back to the operating system and faulted in again.
 
     Limits: images up to 4096 x 4096, at most 16 attribute columns and width x height x
     columns at most 2**25; at most 131072 triangles, covering at most 2**22 (triangle, pixel
@@ -141,8 +152,17 @@ def rasterize(
     """
     mode = _checks.choice(mode, "mode", MODES)  # a bad mode fails before any work
     span = _checks.positive_int(span, "span")
-    frags = fragments(clip, attributes, triangles, width, height, depth_bits)
-    return interpolate(frags, mode, span), frags.covered
+    if mode == "subdivided":  # its exact anchors depend on each fragment's span: per fragment
+        frags = fragments(clip, attributes, triangles, width, height, depth_bits)
+        return interpolate(frags, mode, span), frags.covered
+    scan = _checked_scan(clip, attributes, triangles, width, height, depth_bits)
+    lines = _RowLines(scan, mode)
+    values = np.zeros((height, width, scan.pieces.smooth.shape[2]))
+    covered = np.zeros((height, width), dtype=bool)
+    for rows, drawn, item in _depth_test(scan):
+        covered[rows] = drawn
+        lines.evaluate(item, out=values[rows])
+    return values, covered
 
 
 def fragments(
@@ -184,17 +204,7 @@ def fragments(
            [1, 1, 0, 0],
            [1, 1, 1, 0]])
     """
-    clip, attributes, triangles = _check_scene(clip, attributes, triangles)
-    width = _checks.positive_int(width, "width")
-    height = _checks.positive_int(height, "height")
-    depth_bits = _checks.integer_in(depth_bits, "depth_bits", 16, DEPTH_BITS)
-    pixels_times_columns = width * height * attributes.shape[1]
-    if pixels_times_columns > MAX_VALUES:
-        raise ValueError(
-            f"attributes has {attributes.shape[1]} columns: at {width} x {height} pixels at most "
-            f"{MAX_VALUES // (width * height)} fit (width x height x columns <= {MAX_VALUES:,})"
-        )
-    return _fragments(_clip_triangles(clip, attributes, triangles), width, height, depth_bits)
+    return _fragments(_checked_scan(clip, attributes, triangles, width, height, depth_bits))
 
 
 def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> np.ndarray:
@@ -228,7 +238,7 @@ def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> 
     span = _checks.positive_int(span, "span")
     image = np.zeros((frags.height * frags.width, frags.clipped.smooth.shape[2]))
     for chunk, values in _values_in_chunks(frags, mode, span):
-        image[frags.pixel[chunk]] = values.T
+        _scatter(image, frags.pixel[chunk], values.T)
     return image.reshape(frags.height, frags.width, -1)
 
 
@@ -387,7 +397,7 @@ class Fragments:
         """
         values = np.asarray(values)
         out = np.full((self.height * self.width, *values.shape[1:]), fill, dtype=values.dtype)
-        out[self.pixel] = values
+        _scatter(out, self.pixel, values)
         return out.reshape(self.height, self.width, *values.shape[1:])
 
 
@@ -461,6 +471,15 @@ def fragment_footprints(
     return footprint
 
 
+def _scatter(out: np.ndarray, index: np.ndarray, values: np.ndarray) -> None:
+    """``out[index] = values``, for (N, ...) ``out`` and (P, ...) ``values``, one column at a
+    time: numpy scatters a column several times faster than rows of a few values each."""
+    columns = int(np.prod(out.shape[1:]))
+    out, values = out.reshape(len(out), columns), values.reshape(len(values), columns)
+    for k in range(columns):
+        out[:, k][index] = values[:, k]
+
+
 def _check_fragments(frags: object) -> None:
     if not isinstance(frags, Fragments):
         raise TypeError(
@@ -472,9 +491,42 @@ def _check_fragments(frags: object) -> None:
 # -------------------------------------------------------------------------------
 
 
-def _fragments(
-    pieces: ClippedTriangles, width: int, height: int, depth_bits: int = DEPTH_BITS
-) -> Fragments:
+def _checked_scan(
+    clip: object, attributes: object, triangles: object, width: int, height: int, depth_bits: int
+) -> _Scan:
+    """Check :func:`fragments`' (and :func:`rasterize`'s) arguments, clip and scan-convert."""
+    clip, attributes, triangles = _check_scene(clip, attributes, triangles)
+    width = _checks.positive_int(width, "width")
+    height = _checks.positive_int(height, "height")
+    depth_bits = _checks.integer_in(depth_bits, "depth_bits", 16, DEPTH_BITS)
+    pixels_times_columns = width * height * attributes.shape[1]
+    if pixels_times_columns > MAX_VALUES:
+        raise ValueError(
+            f"attributes has {attributes.shape[1]} columns: at {width} x {height} pixels at most "
+            f"{MAX_VALUES // (width * height)} fit (width x height x columns <= {MAX_VALUES:,})"
+        )
+    return _scan(_clip_triangles(clip, attributes, triangles), width, height, depth_bits)
+
+
+@dataclass(frozen=True)
+class _Scan:
+    """Everything before the depth test: the spans each clipped triangle covers, row by row, and
+    its barycentrics and depth as planes over the screen."""
+
+    pieces: ClippedTriangles  # (T) counter-clockwise, none degenerate
+    width: int
+    height: int
+    depth_bits: int
+    rows: _Rows  # (R) one item per (triangle, pixel row): the span it covers there
+    b_at_0: np.ndarray  # (3, R) barycentrics at column 0 of each row item
+    b_dx: np.ndarray  # (3, T) their step per column
+    b_dy: np.ndarray  # (3, T) their step per image row (downwards)
+    z_at_0: np.ndarray  # (R,) window depth at column 0 of each row item
+    z_dx: np.ndarray  # (R,) its step per column
+
+
+def _scan(pieces: ClippedTriangles, width: int, height: int, depth_bits: int) -> _Scan:
+    """Snap, orient and scan-convert the clipped triangles: their row items and planes."""
     window = _viewport(pieces.clip, width, height)
     X = np.rint(window[..., 0] * SUBPIXELS).astype(np.int64)  # snap to the subpixel grid
     Y = np.rint(window[..., 1] * SUBPIXELS).astype(np.int64)
@@ -502,22 +554,32 @@ def _fragments(
     z = window[..., 2].T if depth_bits > 24 else _float32_window_depth(pieces.clip).T  # (3, T)
     z_at_0 = np.sum(b_at_0 * z[:, rows.piece], axis=0)
     z_dx = np.sum(b_dx * z, axis=0)[rows.piece]
+    return _Scan(pieces, width, height, depth_bits, rows, b_at_0, b_dx, b_dy, z_at_0, z_dx)
 
-    pixel, item = _depth_test(rows, z_at_0, z_dx, width, height, depth_bits)
+
+def _fragments(scan: _Scan) -> Fragments:
+    """The fragments that pass the depth test, in image order: what :func:`fragments` returns."""
+    width, rows = scan.width, scan.rows
+    pixels, items = [np.zeros(0, dtype=np.int64)], [np.zeros(0, dtype=np.int64)]
+    for band, drawn, item in _depth_test(scan):
+        in_band = np.flatnonzero(drawn)
+        pixels.append(band.start * width + in_band)
+        items.append(item.ravel()[in_band])
+    pixel, item = np.concatenate(pixels), np.concatenate(items)
     x = pixel % width
-    line = np.take(np.concatenate([b_at_0, b_dx[:, rows.piece]]), item, axis=1)  # one gather
+    line = np.take(np.concatenate([scan.b_at_0, scan.b_dx[:, rows.piece]]), item, axis=1)
     return Fragments(
         width=width,
-        height=height,
+        height=scan.height,
         pixel=pixel,
         piece=rows.piece[item],
-        barycentric=line[0:3] + line[3:6] * x,
-        clipped=pieces,
-        barycentric_dx=b_dx,
-        barycentric_dy=b_dy,
+        barycentric=line[0:3] + line[3:6] * x,  # one gather, then b = b_at_0 + b_dx x
+        clipped=scan.pieces,
+        barycentric_dx=scan.b_dx,
+        barycentric_dy=scan.b_dy,
         row_item=item,
         row_spans=np.stack([rows.x_first, rows.x_last], axis=1),
-        row_depths=np.stack([z_at_0, z_dx], axis=1),
+        row_depths=np.stack([scan.z_at_0, scan.z_dx], axis=1),
     )
 
 
@@ -568,7 +630,6 @@ class _Rows:
     y: np.ndarray  # (R,) which row (window y, 0 at the bottom)
     x_first: np.ndarray  # (R,) first covered column
     x_last: np.ndarray  # (R,) last covered column (x_last < x_first: none)
-    K: np.ndarray  # (R, 3) E_i at column 0 of the row: E_i(x) = SUBPIXELS A_i x + K_i
 
 
 def _rows(Y: np.ndarray, e: _Edges, width: int, height: int) -> _Rows:
@@ -592,16 +653,22 @@ def _rows(Y: np.ndarray, e: _Edges, width: int, height: int) -> _Rows:
     # test E_i >= threshold_i holds on one side of a column. For A_i > 0 it holds from column
     # ceil((threshold_i - K_i) / (SUBPIXELS A_i)) on; for A_i < 0 up to column
     # floor((K_i - threshold_i) / (SUBPIXELS |A_i|)); for A_i = 0 on the whole row or nowhere.
-    # Integers throughout, so the fill rule is exact.
-    A, threshold = e.A[piece], e.threshold[piece]
-    K = e.B[piece] * (SUBPIXELS * y + half)[:, None] + e.C[piece] + A * half
+    # Integers throughout, so the fill rule is exact. Each is (3, R), edge by edge: numpy
+    # reduces over the three edges much faster that way round than along a (R, 3) array's rows.
+    A, B, C, threshold = (_per_row_item(a, piece) for a in (e.A, e.B, e.C, e.threshold))
+    K = B * (SUBPIXELS * y + half) + C + A * half
     step = SUBPIXELS * np.where(A != 0, np.abs(A), 1)
     from_left = np.where(A > 0, _ceil_div(threshold - K, step), 0)
     to_right = np.where(A < 0, (K - threshold) // step, width - 1)
-    never = np.any((A == 0) & (K < threshold), axis=1)
-    x_first = np.maximum(from_left.max(axis=1), 0)
-    x_last = np.where(never, -1, np.minimum(to_right.min(axis=1), width - 1))
-    return _Rows(piece, y, x_first, x_last, K)
+    never = np.any((A == 0) & (K < threshold), axis=0)
+    x_first = np.maximum(from_left.max(axis=0), 0)
+    x_last = np.where(never, -1, np.minimum(to_right.min(axis=0), width - 1))
+    return _Rows(piece, y, x_first, x_last)
+
+
+def _per_row_item(per_triangle: np.ndarray, piece: np.ndarray) -> np.ndarray:
+    """A (T, 3) array's rows for each row item's triangle, edge by edge: (3, R)."""
+    return np.take(per_triangle.T, piece, axis=1)
 
 
 def _ceil_div(a: np.ndarray, b: np.ndarray | int) -> np.ndarray:
@@ -632,8 +699,13 @@ def _barycentric_planes(
     y = np.where(usable[:, None], y, Y / SUBPIXELS)
     area2 = np.where(usable, exact_area2, area2 / SUBPIXELS**2)[:, None]
     a, b, c = (coefficient / area2 for coefficient in _edge_functions(x, y))  # b_i = a x + b y + c
-    at_0 = a[rows.piece] * 0.5 + b[rows.piece] * (rows.y + 0.5)[:, None] + c[rows.piece]
-    return at_0.T, a.T, -b.T  # image rows go down, window y goes up
+    # At the centre of column 0 of each row item's row: (x, y) = (1/2, y + 1/2).
+    at_0 = (
+        _per_row_item(a, rows.piece) * 0.5
+        + _per_row_item(b, rows.piece) * (rows.y + 0.5)
+        + _per_row_item(c, rows.piece)
+    )
+    return at_0, a.T, -b.T  # image rows go down, window y goes up
 
 
 def _take(a: np.ndarray | ClippedTriangles, keep: np.ndarray) -> np.ndarray | ClippedTriangles:
@@ -656,9 +728,7 @@ def _reorder(pieces: ClippedTriangles, order: np.ndarray) -> ClippedTriangles:
 # ----------------------------------------------
 
 
-def _depth_test(
-    rows: _Rows, z_at_0: np.ndarray, z_dx: np.ndarray, width: int, height: int, depth_bits: int
-) -> tuple[np.ndarray, np.ndarray]:
+def _depth_test(scan: _Scan) -> Iterator[tuple[slice, np.ndarray, np.ndarray]]:
     """Depth test ``GL_LESS`` against a buffer cleared to 1: the row item that wins each pixel.
 
     What a textbook writes per fragment, ``if z < depth[y, x]: depth[y, x] = z; drawn[y, x] =
@@ -669,30 +739,48 @@ def _depth_test(
     drawn: as in OpenGL, where a later fragment must be strictly nearer to replace an earlier
     one.
 
-    Returns the drawn pixels (flat image indices, row 0 at the top, ascending) and the row item
-    that won each.
+    The image is tested in bands of whole rows, about BAND pixels each, top to bottom: each
+    band only against the row items on its rows, and their fragments CHUNK at a time. Yields,
+    for every band something may be drawn on, its image rows (a slice), where something was
+    drawn ((rows, width) bool), and the row item that won each pixel ((rows, width) int; R, one
+    past the last row item, where nothing was).
     """
-    item_bits = max(len(rows.piece).bit_length(), 1)  # at most 23: see MAX_ROWS
-    depth_bits = min(depth_bits, 62 - item_bits)  # so 40 bits may become 39
-    cleared = _fixed_point(np.array(1.0), depth_bits) << item_bits  # depth 1: nothing passes
-    keys = np.full(width * height, cleared, dtype=np.int64)
+    rows, width, height = scan.rows, scan.width, scan.height
+    none = len(rows.piece)  # the row item R: nothing drawn
+    item_bits = max(none.bit_length(), 1)  # 0 to R fit: at most 23, see MAX_ROWS
+    depth_bits = min(scan.depth_bits, 62 - item_bits)  # so 40 bits may become 39
+    # The cleared buffer holds depth 1, where nothing passes, and row item R. As a key: just
+    # below every fragment at depth 1 and above every nearer one, ((1 - one step) << bits) | R.
+    cleared = ((int(_fixed_point(np.array(1.0), depth_bits)) - 1) << item_bits) | none
 
     length = np.maximum(rows.x_last - rows.x_first + 1, 0)
-    first_fragment = np.cumsum(length) - length
-    row_start = (height - 1 - rows.y) * width  # image order: row 0 at the top
-    start = 0
-    while start < len(length):  # in chunks of about CHUNK fragments, to bound memory
-        stop = max(int(np.searchsorted(first_fragment, first_fragment[start] + CHUNK)), start + 1)
-        n = length[start:stop]
-        item = np.repeat(np.arange(start, stop), n)
-        shift = first_fragment[start:stop] - first_fragment[start] - rows.x_first[start:stop]
-        x = np.arange(item.size) - np.repeat(shift, n)
-        z = np.repeat(z_at_0[start:stop], n) + np.repeat(z_dx[start:stop], n) * x
-        depth = _fixed_point(z, depth_bits)
-        np.minimum.at(keys, np.repeat(row_start[start:stop], n) + x, (depth << item_bits) | item)
-        start = stop
-    pixel = np.flatnonzero(keys < cleared)
-    return pixel, keys[pixel] & ((1 << item_bits) - 1)
+    image_row = height - 1 - rows.y  # row 0 at the top
+    band_rows = max(BAND // width, 1)
+    band = image_row // band_rows
+    by_band = np.argsort(band, kind="stable")  # the row items, band by band
+    band_ends = np.searchsorted(band[by_band], np.arange(1, _ceil_div(height, band_rows)))
+    for top, items in zip(range(0, height, band_rows), np.split(by_band, band_ends), strict=True):
+        if len(items) == 0:
+            continue
+        band_height = min(band_rows, height - top)
+        keys = np.full(band_height * width, cleared, dtype=np.int64)
+        n = length[items]
+        first_fragment = np.cumsum(n) - n
+        start = 0
+        while start < len(n):  # in chunks of about CHUNK fragments, to bound memory
+            stop = int(np.searchsorted(first_fragment, first_fragment[start] + CHUNK))
+            stop = max(stop, start + 1)
+            chunk, count = items[start:stop], n[start:stop]
+            item = np.repeat(chunk, count)
+            shift = first_fragment[start:stop] - first_fragment[start] - rows.x_first[chunk]
+            x = np.arange(item.size) - np.repeat(shift, count)
+            z = np.repeat(scan.z_at_0[chunk], count) + np.repeat(scan.z_dx[chunk], count) * x
+            depth = _fixed_point(z, depth_bits)
+            pixel = np.repeat((image_row[chunk] - top) * width, count) + x  # in the band
+            np.minimum.at(keys, pixel, (depth << item_bits) | item)
+            start = stop
+        keys = keys.reshape(band_height, width)
+        yield slice(top, top + band_height), keys < cleared, keys & ((1 << item_bits) - 1)
 
 
 def _fixed_point(z: np.ndarray, bits: int) -> np.ndarray:
@@ -742,6 +830,56 @@ def _a_over_w_and_one_over_w(pieces: ClippedTriangles) -> np.ndarray:
     as one (T, 3, K + 1) array, so that each fragment gathers both at once."""
     one_over_w = _one_over_w(pieces)
     return np.concatenate([pieces.smooth * one_over_w[..., None], one_over_w[..., None]], 2)
+
+
+class _RowLines:
+    """What :func:`rasterize` interpolates, as a line along each row item.
+
+    ``a/w`` and ``1/w`` (perspective) or ``a`` (affine) are planes over the screen: along the
+    row of a row item, each is a line, its value at the span's first column plus a step per
+    column. The value is a lerp of the vertices' values with the barycentrics there, the step
+    (the same for the whole triangle) one with the barycentrics' steps. Starting from the
+    span's first column rather than column 0 keeps the arithmetic as exact as the barycentrics.
+
+    One more row item, R, on one more triangle, T, is for pixels nothing was drawn on: its
+    lines are 0 (and 1/w = 1), so that those pixels come out 0 without a mask.
+    """
+
+    def __init__(self, scan: _Scan, mode: str) -> None:
+        rows, pieces = scan.rows, scan.pieces
+        self.divide = mode == "perspective"  # a = (a/w) / (1/w)
+        # (T, 3, K'): K' = K attributes, or K a/w and then 1/w
+        per_vertex = _a_over_w_and_one_over_w(pieces) if self.divide else pieces.noperspective
+        columns, R = per_vertex.shape[2], len(rows.piece)
+        self.piece = np.append(rows.piece, len(pieces))  # (R + 1,)
+        self.first = np.append(rows.x_first, 0).astype(np.float64)  # (R + 1,)
+        self.at_first = np.zeros((columns, R + 1))
+        if self.divide:
+            self.at_first[-1, R] = 1.0  # 1/w where nothing was drawn: 0 / 1 = 0
+        step = barycentric.lerp(scan.b_dx, np.moveaxis(per_vertex, 0, 2))  # (K', T)
+        self.step = np.hstack([step, np.zeros((columns, 1))])  # (K', T + 1)
+        n = max(VALUES_CHUNK // max(columns, 1), 1)
+        for items in (slice(i, min(i + n, R)) for i in range(0, R, n)):  # to bound memory
+            piece = rows.piece[items]
+            b_first = scan.b_at_0[:, items] + scan.b_dx[:, piece] * rows.x_first[items]
+            self.at_first[:, items] = barycentric.lerp(b_first, _per_fragment(per_vertex, piece))
+
+    def evaluate(self, item: np.ndarray, out: np.ndarray) -> None:
+        """Into ``out`` (rows, width, K): the attributes at each pixel of a band of image rows,
+        from the line of the row item that won it (``item``, (rows, width))."""
+        piece = self.piece.take(item)
+        x = np.arange(out.shape[1]) - self.first.take(item)  # columns from the span's first
+
+        def along_row(k: int) -> np.ndarray:  # a/w, 1/w or a at each pixel
+            return self.at_first[k].take(item) + self.step[k].take(piece) * x
+
+        if not self.divide:
+            for k in range(out.shape[2]):
+                out[..., k] = along_row(k)
+            return
+        one_over_w = along_row(-1)
+        for k in range(out.shape[2]):
+            out[..., k] = along_row(k) / one_over_w  # the per-pixel divide
 
 
 def _values_in_chunks(frags: Fragments, mode: str, span: int) -> Iterator[tuple[slice, np.ndarray]]:

@@ -42,7 +42,7 @@ before the test: equal depths then compare equal, and the last-place differences
 module's ``b @ z`` and ``rasterize``'s row-by-row depth vanish too. What remains: triangles in
 the same sloped plane but with different corners (z-fighting) can round to neighbouring 40-bit
 steps, about 2 pixels in 10**4 of such overlaps; and ``rasterize`` gives up depth bits when
-more than 2**22 (triangle, row) pairs share one draw (see its ``_nearest``).
+more than 2**22 (triangle, row) pairs share one draw (see its ``_depth_test``).
 
 What :func:`interp.rasterize` does differently, and why
 -------------------------------------------------------
@@ -53,10 +53,15 @@ What :func:`interp.rasterize` does differently, and why
 - *One depth test for all triangles at once.* Instead of a Python loop over triangles, each
   fragment's rounded depth and draw order are packed into one integer key; ``np.minimum.at``
   keeps the smallest key per pixel, which is the nearest fragment and, on a tie, the first drawn.
-- *Chunks.* Those keys are made ``CHUNK`` fragments at a time, so that memory stays bounded
-  when many triangles overlap.
-- *Planes.* Barycentrics and depth are linear on the screen, so ``rasterize`` evaluates them
-  once per row and steps along it, and interpolates only the pixels that survived.
+- *Bands and chunks.* Like llvmpipe with its tiles, it works through the image in bands of
+  whole rows (``BAND`` pixels), each depth-tested only against the triangles' rows that lie
+  on it, and those keys are made ``CHUNK`` fragments at a time: memory stays bounded however
+  much the triangles overlap, and the temporaries stay small enough to be reused.
+- *Lines along rows.* ``a/w`` and ``1/w`` (affinely, ``a``) are planes over the screen, so on
+  each row a triangle's span lies on they are a line: a value at the span's first column plus
+  a step per column. Each pixel evaluates the line of the triangle that won it, and only those.
+- *No clipping where none is needed.* Triangles wholly inside the view volume skip the six
+  clipping passes, and triangles wholly outside one plane are dropped before them.
 """
 
 from __future__ import annotations
@@ -88,23 +93,18 @@ def draw(
 
     Parameters
     ----------
-    clip : (N, 4) array_like
-        Clip-space vertex positions ``(x, y, z, w)``.
-    attributes : (N, K) array_like
-        Vertex attributes to interpolate.
-    triangles : (M, 3) array_like of int
-        Vertex indices, in draw order. Both windings are drawn.
-    width, height : int
-        Image size in pixels, each in [1, 4096].
+    clip, attributes, triangles, width, height
+        The scene and the image size, exactly as for :func:`~interp.rasterize`: clip-space
+        ``(x, y, z, w)`` per vertex, K attributes per vertex, vertex indices in draw order.
     mode : {"perspective", "affine"}
         GLSL ``smooth`` (divide by the interpolated ``1/w``) or ``noperspective``.
 
     Returns
     -------
-    values : (height, width, K) float array
-        Attributes at each pixel centre; 0 where nothing is drawn. Row 0 is the top.
-    covered : (height, width) bool array
-        Where a triangle was drawn.
+    values, covered : ndarray
+        As :func:`~interp.rasterize` returns them: a ``(height, width, K)`` float array of the
+        attributes at each pixel centre (0 where nothing is drawn; row 0 is the top), and a
+        ``(height, width)`` bool array of where a triangle was drawn.
 
     Examples
     --------

@@ -139,11 +139,15 @@ class PlaneFit:
         Largest ``|value - plane|``, as a fraction of the values' range (0 for a plane).
     pixels : int
         How many pixels were fitted.
+    on_a_line : bool
+        The pixels all lie on one line (one row, say): any function along a line is fitted by
+        some plane there, so the fit tells nothing about the values being a plane.
     """
 
     coefficients: np.ndarray
     misfit: float
     pixels: int
+    on_a_line: bool = False
 
 
 def plane_fit(values: np.ndarray, where: np.ndarray) -> PlaneFit:
@@ -157,6 +161,8 @@ def plane_fit(values: np.ndarray, where: np.ndarray) -> PlaneFit:
     ([2.0, -1.0, 1.0], True)
     >>> plane_fit(1.0 / (1 + cols + rows), np.ones((4, 5), bool)).misfit > 0.05
     True
+    >>> plane_fit(1.0 / (1 + cols + rows), rows == 2).on_a_line   # one row: anything fits
+    True
     """
     values = np.asarray(values, dtype=float)
     where = np.asarray(where, dtype=bool) & np.isfinite(values)
@@ -165,6 +171,8 @@ def plane_fit(values: np.ndarray, where: np.ndarray) -> PlaneFit:
         return PlaneFit(np.zeros(3), 0.0, len(rows))
     z = values[where]
     design = np.column_stack([cols, rows, np.ones(len(rows))]).astype(float)
+    if np.linalg.matrix_rank(design) < 3:
+        return PlaneFit(np.zeros(3), 0.0, len(rows), on_a_line=True)
     scale = max(float(np.abs(z).max()), 1e-300)
     coefficients, *_ = np.linalg.lstsq(design, z / scale, rcond=None)
     coefficients = coefficients * scale

@@ -18,6 +18,21 @@ settings.register_profile("dev", max_examples=30, deadline=None)
 settings.load_profile("ci" if os.environ.get("CI") else "dev")
 
 
+@pytest.fixture(scope="module")
+def gl():
+    """:mod:`interp.opengl` with a context made: real OpenGL (Mesa's llvmpipe through EGL).
+    Skipped where there is none, except under ``CI=true``, where that is a failure."""
+    try:
+        from interp import opengl
+
+        opengl.context()
+    except (ImportError, RuntimeError) as error:
+        if os.environ.get("CI"):
+            pytest.fail(f"CI must have OpenGL (EGL + Mesa): {error}")
+        pytest.skip(f"no OpenGL here: {error}")
+    return opengl
+
+
 @pytest.fixture
 def rng() -> np.random.Generator:
     return np.random.default_rng(20261122)

@@ -2,15 +2,21 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
 from pathlib import Path
 
 import nbformat
 import numpy as np
+import pytest
+from matplotlib.collections import LineCollection
 from nbclient import NotebookClient
 
 import interp
 
 LESSONS = Path(__file__).resolve().parent.parent / "lessons"
+#: nbgrader's own environment (make test installs it; see the Makefile for why it is apart).
+NBGRADER_BIN = LESSONS.parent / ".venv-nbgrader" / "bin"
 
 
 def run_lesson(path: Path, workdir: Path, backend: str = "widget") -> nbformat.NotebookNode:
@@ -49,3 +55,43 @@ def random_scene(rng: np.random.Generator, n_triangles: int, behind: bool = Fals
     attributes = rng.uniform(0, 1, (len(view), 3))
     triangles = np.arange(3 * n_triangles).reshape(-1, 3)
     return clip, attributes, triangles
+
+
+def shown_arrays(figure):
+    """Every number the figure displays: line data, images, line collections."""
+    for ax in figure.axes:
+        for line in ax.lines:
+            yield np.asarray(line.get_xydata(), float)
+        for image in ax.images:
+            data = image.get_array()
+            yield np.ma.compressed(data) if np.ma.isMaskedArray(data) else np.asarray(data)
+        for collection in ax.collections:
+            if isinstance(collection, LineCollection):
+                for segment in collection.get_segments():
+                    yield np.asarray(segment, float)
+
+
+def need_nbgrader() -> None:
+    """Skip the test where nbgrader is not installed, except under ``CI=true`` (a failure)."""
+    if not (NBGRADER_BIN / "nbgrader").exists():
+        if os.environ.get("CI"):
+            pytest.fail(f"CI must have nbgrader in {NBGRADER_BIN} (make test installs it)")
+        pytest.skip(f"no nbgrader in {NBGRADER_BIN} (make test installs it)")
+
+
+def nbgrader(*args: str, cwd: Path, timeout: float = 600) -> subprocess.CompletedProcess:
+    """Run nbgrader in ``cwd`` (a course folder) and return its result; it must succeed."""
+    # nbgrader runs alembic (for its gradebook) as a subprocess: its venv's bin must be on PATH
+    env = {**os.environ, "PATH": f"{NBGRADER_BIN}{os.pathsep}{os.environ['PATH']}"}
+    env["JUPYTER_CONFIG_DIR"] = str(cwd / ".jupyter")
+    env.pop("MPLBACKEND", None)
+    result = subprocess.run(
+        [str(NBGRADER_BIN / "nbgrader"), *args],
+        cwd=cwd,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+    )
+    assert result.returncode == 0, result.stderr[-4000:]
+    return result

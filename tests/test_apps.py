@@ -3,13 +3,11 @@
 from __future__ import annotations
 
 import ipywidgets as widgets
-import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from matplotlib.backend_bases import MouseEvent
-from matplotlib.collections import LineCollection
 
 import interp
 from interp import approximation, apps
@@ -17,25 +15,7 @@ from interp.plots.gpu import LAB_CAMERA
 from interp.plots.registry import RESOLUTIONS
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, checker_views
 
-
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    plt.close("all")
-
-
-def shown_arrays(figure):
-    """Every number the figure displays: line data, images, line collections."""
-    for ax in figure.axes:
-        for line in ax.lines:
-            yield np.asarray(line.get_xydata(), float)
-        for image in ax.images:
-            data = image.get_array()
-            yield np.ma.compressed(data) if np.ma.isMaskedArray(data) else np.asarray(data)
-        for collection in ax.collections:
-            if isinstance(collection, LineCollection):
-                for segment in collection.get_segments():
-                    yield np.asarray(segment, float)
+from helpers import shown_arrays
 
 
 def snapshot(figure):
@@ -265,11 +245,13 @@ def test_static_display_shows_the_figure_once_and_updates_it(monkeypatch):
     monkeypatch.setattr("interp.apps._app.display", fake_display)
     app = apps.st_mapping()
     app._ipython_display_()
-    assert [kind for kind, *_ in shown] == ["display", "display", "display"]
-    assert shown[0][1] is app.figure and isinstance(shown[2][1], widgets.Widget)
-    alt = shown[0][2]["image/png"]["alt"]
+    assert [kind for kind, *_ in shown] == ["display"] * 4
+    # the sliders' names for screen readers, the picture, the result as text, the controls
+    assert "aria-label" in shown[0][1].data
+    assert shown[1][1] is app.figure and isinstance(shown[3][1], widgets.Widget)
+    alt = shown[1][2]["image/png"]["alt"]
     assert alt.startswith(app.plot.title) and app.plot.readout() in alt  # the picture's alt text
-    assert shown[1][1]._repr_html_() == app.readout.value  # the result as text
+    assert shown[2][1]._repr_html_() == app.readout.value  # the result as text
     app.controls["w2"].value = 7.0
     updates = [entry for entry in shown if entry[0] == "update"]
     assert updates[0][1] is app.figure and "alt" in updates[0][2]["image/png"]
@@ -288,14 +270,10 @@ def control_values(control):
 @pytest.mark.parametrize("name", sorted(apps.ALL))
 def test_any_slider_values_show_clean_figures(name):
     app = apps.ALL[name]()
-    if name == "checkerboards":
+    if "resolution" in app.controls:
         app.set(resolution="160 x 120")  # keep the fuzz quick; resolutions are tested above
     strategy = st.fixed_dictionaries(
-        {
-            key: control_values(c)
-            for key, c in app.controls.items()
-            if not (name == "checkerboards" and key == "resolution")
-        }
+        {key: control_values(c) for key, c in app.controls.items() if key != "resolution"}
     )
     extremes = [
         {
@@ -336,7 +314,19 @@ def test_resolutions_offered_are_valid():
         assert 0 < width <= 4096 and 0 < height <= 4096
 
 
-@pytest.mark.parametrize("name", ["checkerboards", "clipping", "colour_quad", "uv_images"])
+@pytest.mark.parametrize(
+    "name",
+    [
+        "checkerboards",
+        "checkerboards_outside",
+        "clipping",
+        "clipping_outside",
+        "colour_quad",
+        "outside_view",
+        "texture_filtering",
+        "uv_images",
+    ],
+)
 @pytest.mark.parametrize(
     "camera",
     [

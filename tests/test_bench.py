@@ -17,3 +17,7 @@ def test_benchmark_prints_all_figures(capsys):
     assert "[default allocator]" in out and "keep_freed_memory" in out
     assert out.count("checkerboard app") == 1  # with the allocator setting apps turn on
     assert out.index("checkerboard app") > out.index("keep_freed_memory")
+    if "no OpenGL" not in out:  # the target: rasterize against llvmpipe at 512², both modes
+        verdict = r"perspective \d+\.\d+x, affine \d+\.\d+x \(target at most 1x: (ok|over)\)"
+        assert len(re.findall(verdict, out)) == 1  # with the default allocator only
+        assert out.index("target at most 1x") < out.index("keep_freed_memory")

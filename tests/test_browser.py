@@ -9,6 +9,7 @@ from __future__ import annotations
 import http.client
 import io
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -28,7 +29,10 @@ from browser import (
     sync_api,
 )
 from browser import _wait_for as wait_for_server
+from matplotlib.figure import Figure
 from PIL import Image
+
+from interp.plots import registry
 
 pytestmark = pytest.mark.browser
 
@@ -220,10 +224,20 @@ def test_voila_shows_figures_and_sliders_without_code(tmp_path, page):
         before = wait_until_drawn(canvas)
         text = page.locator("body").inner_text()
         assert "Checkerboards" in text and "Try this" in text  # the prose is there
-        for code in ("apps.checkerboards()", "%matplotlib widget", "import interp", "def checker"):
+        for code in (
+            "apps.checkerboards_outside()",
+            "%matplotlib widget",
+            "import interp",
+            "def checker",
+        ):
             assert code not in text, f"Voilà shows code: {code}"
         drag_handle(page, slider(page, "height", scope="body"), 80)  # Voilà: one page
         wait_until_changed(canvas, before)
+        # Screen readers: every slider named, the key result as live text (as in JupyterLab).
+        sliders = page.get_by_role("slider")
+        assert sliders.count() >= 10
+        assert all(sliders.nth(k).get_attribute("aria-label") for k in range(sliders.count()))
+        assert page.locator(".interp-readout[role=status]").count() >= 2
         save_screenshot(page, "voila")
         assert not page.console_errors, page.console_errors
 
@@ -316,3 +330,62 @@ def test_classroom_server_culls_closed_pages_and_caps_kernels(tmp_path, browser)
             process.wait(timeout=15)
         except subprocess.TimeoutExpired:
             process.kill()
+
+
+# --- figures a screen reader can follow ------------------------------------------------------
+
+
+def kernel_readout(figure_class, **params) -> str:
+    """The readout the same figure gives in the kernel, at the defaults changed by ``params``."""
+    values = {name: param.default for name, param in figure_class.PARAMS.items()} | params
+    return figure_class(Figure(figsize=figure_class.size), **values).readout()
+
+
+def wait_for_new_text(locator, old: str, seconds: float = 20.0) -> str:
+    """The locator's text once it differs from ``old`` (the widget replaces its element)."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        text = locator.inner_text()
+        if text != old:
+            return text
+        time.sleep(0.2)
+    raise AssertionError(f"the readout still says {old!r}")
+
+
+def test_the_readout_is_live_text_that_follows_a_slider_named_for_screen_readers(lab, page):
+    canvas = open_and_run(page, lab, "06_checkerboards.ipynb")
+    wait_until_drawn(canvas)
+    readout = page.locator(f"{VISIBLE} .interp-readout").first
+    assert readout.get_attribute("role") == "status"  # announced when it changes...
+    assert readout.get_attribute("aria-live") == "polite"  # ...without interrupting
+    before = readout.inner_text()
+    assert before == kernel_readout(registry.CheckerboardsOutside)  # lesson 6's first app
+    # Every slider on the page has an accessible name: its description.
+    sliders = page.get_by_role("slider")
+    assert sliders.count() >= 10
+    for k in range(sliders.count()):
+        assert sliders.nth(k).get_attribute("aria-label"), f"slider {k} has no name"
+    # The dropdowns are named by their labels already (a <label for=...> beside a <select>).
+    dropdowns = page.locator(f"{VISIBLE} .widget-dropdown select")
+    named = [
+        page.get_by_role("combobox", name=param.label, exact=True).count()
+        for figure_class in (registry.CheckerboardsOutside, registry.UVImagesFigure)
+        for param in figure_class.PARAMS.values()
+        if param.options
+    ]
+    assert dropdowns.count() == sum(named) and all(named), named
+    # The pitch slider, reached by its name as a screen reader user reaches it, moved with keys.
+    pitch = page.get_by_role("slider", name=re.compile(r"^pitch")).first
+    start = float(pitch.get_attribute("aria-valuenow"))
+    pitch.focus()
+    for _ in range(5):
+        page.keyboard.press("ArrowRight")
+    after = wait_for_new_text(readout, before)
+    value = float(pitch.get_attribute("aria-valuenow"))
+    assert value > start
+    # Settled: the text is the kernel's words at the slider's final value.
+    deadline = time.monotonic() + 20
+    while readout.inner_text() != kernel_readout(registry.CheckerboardsOutside, pitch=value):
+        assert time.monotonic() < deadline, (after, value)
+        time.sleep(0.2)
+    assert_no_errors(page)

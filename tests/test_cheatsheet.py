@@ -1,4 +1,4 @@
-"""The cheat sheet (lesson 9 and the last page of handout.pdf) says what the library computes."""
+"""The cheat sheet (lesson 10 and the last page of handout.pdf) says what the library computes."""
 
 from __future__ import annotations
 
@@ -10,14 +10,14 @@ import pytest
 from matplotlib.figure import Figure
 
 import interp
-from interp import cheatsheet, plots
+from interp import cheatsheet, mipmap, plots
 
 LESSON = (
-    Path(interp.__file__).resolve().parent.parent / "source" / "lessons" / "09_cheat_sheet.ipynb"
+    Path(interp.__file__).resolve().parent.parent / "source" / "lessons" / "10_cheat_sheet.ipynb"
 )
 
 
-def test_lesson_9_prints_the_cheat_sheet():
+def test_lesson_10_prints_the_cheat_sheet():
     text = "\n".join(c.source for c in nbformat.read(LESSON, as_version=4).cells)
     assert cheatsheet.markdown() in text
 
@@ -41,6 +41,10 @@ def test_the_formulas_are_right():
         assert np.isclose((f + n) / (f - n) - 2 * f * n / ((f - n) * w), interp.ndc_depth(w, n, f))
         b, ws = rng.dirichlet([1, 1, 1]), rng.uniform(0.2, 20, 3)
         assert np.allclose((b / ws) / np.sum(b / ws), interp.perspective_weights(b, ws))
+        u_x, v_x, u_y, v_y = rng.normal(0, 0.01, 4)
+        size = 2 ** rng.integers(4, 11)
+        lam = np.log2(size * max(np.hypot(u_x, v_x), np.hypot(u_y, v_y)))
+        assert np.isclose(lam, mipmap.level_of_detail(u_x, v_x, u_y, v_y, size))
     # clipping at the near plane: the formula finds the point with z = -w
     P = interp.perspective(60, 1.0, 0.5, 10.0)
     inside, outside = P @ [0.3, 0.1, -3.0, 1.0], P @ [0.2, 0.0, 0.2, 1.0]

@@ -194,7 +194,8 @@ RIGHT = [
         lambda: {1: ["D", "b", "c"], "2": "A", 3: "b", 4: "a"},
     ),
     (check.recap_7, "letters in any order", lambda: {1: "fedb", 2: "a", 3: "a", 4: "a"}),
-    (check.recap_9, "with commas", lambda: {1: "a", 2: "a", 3: "b, c, f", 4: "a"}),
+    (check.recap_9, "letters", lambda: {1: "b", 2: "c", 3: "a", 4: "b"}),
+    (check.recap_10, "with commas", lambda: {1: "a", 2: "a", 3: "b, c, f", 4: "a"}),
 ]
 
 
@@ -739,3 +740,27 @@ def test_the_right_answers_of_every_recap_pass_and_every_single_wrong_option_is_
                 wrong = {**key, k: question.answer + letter if question.several else letter}
                 verdict = check.recap(lesson, lambda wrong=wrong: wrong)
                 assert not verdict and question.why[letter] in verdict.message
+
+
+def test_each_lesson_asks_its_recap_questions_word_for_word():
+    """The questions a lesson prints are the ones its checker marks, options included."""
+    from pathlib import Path
+
+    import nbformat
+
+    sources = sorted((Path(__file__).parent.parent / "source" / "lessons").glob("*.ipynb"))
+    for lesson, questions in check.QUIZZES.items():
+        (path,) = [p for p in sources if p.name.startswith(f"{lesson:02d}_")]
+        cells = nbformat.read(path, as_version=4).cells
+        (text,) = [
+            c.source
+            for c in cells
+            if c.cell_type == "markdown"
+            and "1. " in c.source
+            and f"check.recap_{lesson}" not in c.source
+            and questions[0].text in c.source
+        ]
+        for k, question in enumerate(questions, start=1):
+            assert f"{k}. {question.text}" in text, (lesson, question.text)
+            for letter, option in question.options.items():
+                assert f"({letter}) {option}" in text, (lesson, k, option)

@@ -1,9 +1,11 @@
 """Classroom set-up: static exports keep their figures, Binder/JupyterHub configuration matches
-the project's real dependencies, presentation mode, and the projector command."""
+the project's real dependencies and name, a student's install is light, presentation mode, and
+the projector command."""
 
 from __future__ import annotations
 
 import base64
+import importlib.metadata
 import io
 import json
 import re
@@ -69,6 +71,61 @@ def test_readme_explains_hub_and_binder_with_this_repository():
     assert "git-pull?repo=" in README  # the nbgitpuller link recipe
     assert "urlpath=lab/tree/" in README
     assert "make present" in README
+
+
+#: The distribution's name: distinct on PyPI (`interp` alone is generic, its neighbours are
+#: interpretability tools); the package it installs is still `import interp`.
+DISTRIBUTION = "perspective-interp"
+
+
+def test_the_distribution_is_perspective_interp_and_installs_import_interp():
+    assert PYPROJECT["project"]["name"] == DISTRIBUTION
+    assert set(importlib.metadata.packages_distributions()["interp"]) == {DISTRIBUTION}
+    assert PYPROJECT["tool"]["setuptools"]["packages"]["find"]["include"] == ["interp*"]
+
+
+def test_readme_binder_hub_and_website_name_the_same_distribution_and_repository():
+    # the JupyterHub install line names the distribution, from the repository
+    assert f'pip install "{DISTRIBUTION} @ git+https://github.com/YOUR-ORG/interp"' in README
+    assert 'pip install "interp' not in README and "pip install interp" not in README
+    # the nbgitpuller recipe pulls that repository into ~/interp and opens lessons/ from there
+    recipe = re.search(r"https://HUB/hub/user-redirect/git-pull\?(\S+)", README).group(1)
+    assert "repo=https%3A%2F%2Fgithub.com%2FYOUR-ORG%2Finterp" in recipe
+    assert "urlpath=lab/tree/interp/lessons/01_the_problem.ipynb" in recipe
+    # the website's launch buttons point at the same repository and lessons
+    site = (ROOT / "site" / "book" / "_config.yml").read_text()
+    assert "url: https://github.com/YOUR-ORG/interp" in site and "path_to_book: lessons" in site
+    makefile = (ROOT / "Makefile").read_text()
+    assert "REPO ?= https://github.com/YOUR-ORG/interp" in makefile
+    # Binder installs the project itself, whatever its name
+    assert DISTRIBUTION in (ROOT / "binder" / "requirements.txt").read_text()
+
+
+#: What the lessons never need: the test, browser, OpenGL, website and hook tools.
+DEVELOPMENT_ONLY = {
+    "pytest", "playwright", "moderngl", "hypothesis", "ruff", "voila", "jupyter-book",
+    "pre-commit", "pillow", "nbgrader",
+}  # fmt: skip
+
+
+def test_make_lessons_installs_only_the_package_and_its_runtime_dependencies():
+    makefile = (ROOT / "Makefile").read_text()
+    assert re.search(r"^lessons: \$\(RUNTIME\)$", makefile, re.M)
+    runtime = re.search(r"^\$\(RUNTIME\):.*\n\t(.+)$", makefile, re.M).group(1)
+    assert runtime.endswith("pip install --quiet -e .")
+    runtime_names = {
+        re.split(r"[<>=\[ ]", d)[0].lower() for d in PYPROJECT["project"]["dependencies"]
+    }
+    assert not runtime_names & DEVELOPMENT_ONLY
+    assert re.search(r"^test: lint ", makefile, re.M)
+    assert re.search(r"^lint: \$\(STAMP\)$", makefile, re.M)
+    assert "STAMP   := $(VENV)/.installed-dev" in makefile  # make test: pip install -e ".[dev]"
+    dev = {
+        re.split(r"[<>=\[ ]", d)[0].lower()
+        for d in PYPROJECT["project"]["optional-dependencies"]["dev"]
+    }
+    assert {"pytest", "playwright", "ruff", "pre-commit"} <= dev
+    assert f"{DISTRIBUTION}" in dev  # with the gl, present and site extras
 
 
 def test_presentation_flag_from_the_environment():

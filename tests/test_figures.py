@@ -28,20 +28,14 @@ def exported(tmp_path_factory):
     return out
 
 
-#: Figures the lessons show with ``apps.App(registry.X)``: interp.apps has no function for them
-#: yet (issue 10 added them; interp/apps/ is another engineer's).
-WITHOUT_APP_FUNCTION = {"linear-on-screen", "shader"}
-
-
 def test_every_app_figure_is_exported_and_covers_every_lesson():
     from interp import apps
 
-    named = {name.replace("-", "_") for name in figures.FIGURES if name not in WITHOUT_APP_FUNCTION}
-    assert named == set(apps.ALL) - {n.replace("-", "_") for n in WITHOUT_APP_FUNCTION}
+    assert {name.replace("-", "_") for name in figures.FIGURES} == set(apps.ALL)
     for figure_class in figures.FIGURES.values():
         assert figure_class.caption.endswith(f"(Lesson {figure_class.lesson})")
-    # lessons 1 to 8; lesson 9, the cheat sheet, has no figure
-    assert {f.lesson for f in figures.FIGURES.values()} == set(range(1, 9))
+    # lessons 1 to 9; lesson 10, the cheat sheet, has no figure
+    assert {f.lesson for f in figures.FIGURES.values()} == set(range(1, 10))
 
 
 def test_every_figure_in_every_format(exported):
@@ -363,3 +357,29 @@ def test_params_file_not_utf8(tmp_path, capsys):
     file.write_bytes(b'{"pitch": "\xff"}')
     assert figures.main(["--out", str(tmp_path / "out"), "--params", str(file)]) == 2
     assert "is not UTF-8 text" in capsys.readouterr().err
+
+
+def test_every_file_carries_its_title_and_alt_text(exported):
+    """Screen readers and search find what each figure shows: the caption and the key result
+    (the apps' readout at the drawn parameters) in the SVG's title and desc, the PNG's text
+    chunks and the PDF's Title and Subject."""
+    from html import unescape
+
+    from PIL import Image
+
+    for name, figure_class in figures.FIGURES.items():
+        _, alt = figures._draw(figure_class, figure_class.defaults())
+        assert alt.startswith(figure_class.caption) and len(alt) > len(figure_class.caption)
+        svg = (exported / f"{name}.svg").read_text()
+        root = svg[svg.index("<svg") : svg.index(">", svg.index("<svg")) + 1]
+        assert 'role="img"' in root and 'aria-labelledby="title desc"' in root
+        title = svg[svg.index('<title id="title">') + 18 : svg.index("</title>")]
+        desc = svg[svg.index('<desc id="desc">') + 16 : svg.index("</desc>")]
+        assert (unescape(title), unescape(desc)) == (figure_class.title, alt)
+        with Image.open(exported / f"{name}.png") as png:
+            assert png.text["Title"] == figure_class.title and png.text["Description"] == alt
+        pdf = (exported / f"{name}.pdf").read_bytes()
+        assert b"/Subject" in pdf
+        if figure_class.title.isascii() and "(" not in figure_class.title:
+            assert f"/Title ({figure_class.title})".encode() in pdf
+    assert b"/Title (Perspective-correct interpolation)" in (exported / "handout.pdf").read_bytes()

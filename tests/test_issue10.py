@@ -10,23 +10,17 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 import nbformat
 import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
 import interp
-from interp import depth, lerp, mistakes
+from interp import depth, lerp, mistakes, theory
+from interp.plots.params import camera_from
 from interp.plots.registry import FIGURES
 
 SOURCES = Path(interp.__file__).resolve().parent.parent / "source" / "lessons"
-
-
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    plt.close("all")
 
 
 def cells(number: int) -> list[nbformat.NotebookNode]:
@@ -255,3 +249,27 @@ def test_lessons_7_and_8_quote_the_readouts():
     assert plane.replace("Over the screen, ", "") in text
     counts = shown("clipping").view.counts
     assert f"{counts['visible triangles']} triangles in view becoming {counts['pieces']}" in text
+
+
+# --- found by a review of lessons 7-9 ----------------------------------------------------------
+
+
+@pytest.mark.parametrize("height", [0.01, -0.01])
+def test_a_quad_seen_as_one_row_of_pixels_is_not_called_a_plane(height):
+    # Lowering the camera to the ground squeezes the quad into one pixel row, where any function
+    # fits a plane: "find a camera for which w is a plane" must not be answered there.
+    figure = shown("linear-on-screen", height=height)
+    params = {**FIGURES["linear-on-screen"].defaults(), "height": height}
+    truth = theory.ground_truth(camera_from(params), 240, 180)
+    assert len(np.flatnonzero(truth.covered.any(axis=1))) == 1
+    assert "is a plane" not in figure.readout() and "cannot be judged" in figure.readout()
+
+
+def test_the_span_costs_in_lesson_8_are_what_the_lab_measures():
+    lab = shown("approximations")
+    spans = lab.lab.costs["spans"]
+    per_pixel = float(spans.divides_per_pixel[list(spans.setting).index(16)])
+    assert 0.12 < per_pixel < 0.14  # "about 0.13 divides per pixel for 16-pixel spans"
+    assert "about 0.13 divides per pixel for 16-pixel spans" in prose(8)
+    rolled_flat = shown("approximations", roll=0.0).readout()
+    assert "mean error 0 (to rounding) texels" in rolled_flat

@@ -23,6 +23,7 @@ STEPS = {
     "depth": ("w2", 3.0),
     "attributes": ("w2", 1.3),
     "approximations": ("pitch", 0.5),  # small steps: the decades of its log axes stay
+    "mipmap_pyramid": ("frequency", ["8", "32", "4", "16"]),  # a dropdown: these in turn
 }
 
 
@@ -39,7 +40,10 @@ def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
     blitter = Blitter(app.figure, app.plot.dynamic)
     blitter.draw()
     for k in range(4):
-        app.set(**{key: app.controls[key].value + (step if k % 2 == 0 else -step / 2)})
+        if isinstance(step, list):
+            app.set(**{key: step[k]})
+        else:
+            app.set(**{key: app.controls[key].value + (step if k % 2 == 0 else -step / 2)})
         blitter.draw()
         blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
         app.figure.canvas.draw()
@@ -209,3 +213,19 @@ def test_a_step_asks_for_no_full_redraw(monkeypatch):
     finally:
         plt.interactive(interactive)
     assert requests == []
+
+
+def test_an_orbit_of_3d_axes_redraws_everything_once():
+    # The mouse turns a 3D view: its panes and ticks in the saved background are out of date.
+    figure = plt.figure()
+    ax = figure.add_subplot(projection="3d")
+    (line,) = ax.plot([0, 1], [0, 1], [0, 1])
+    blitter = Blitter(figure, [line])
+    blitter.draw()
+    ax.view_init(elev=10.0, azim=75.0)  # what dragging with the mouse does
+    line.set_data_3d([0, 1], [1, 0], [0, 1])
+    blitter.draw()
+    assert blitter.full_draws == 2
+    blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
+    figure.canvas.draw()
+    np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))

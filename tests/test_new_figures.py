@@ -6,37 +6,18 @@ values show a clean figure."""
 from __future__ import annotations
 
 import ipywidgets as widgets
-import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from matplotlib.collections import LineCollection
 
 from interp.apps import App
 from interp.apps._live import Blitter
 from interp.plots import registry
 
+from helpers import shown_arrays
+
 NEW = [registry.LinearOnScreen, registry.Shader]
-
-
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    plt.close("all")
-
-
-def shown_arrays(figure):
-    for ax in figure.axes:
-        for line in ax.lines:
-            yield np.asarray(line.get_xydata(), float)
-        for image in ax.images:
-            data = image.get_array()
-            yield np.ma.compressed(data) if np.ma.isMaskedArray(data) else np.asarray(data)
-        for collection in ax.collections:
-            if isinstance(collection, LineCollection):
-                for segment in collection.get_segments():
-                    yield np.asarray(segment, float)
 
 
 @pytest.mark.parametrize("figure_class", NEW, ids=lambda c: c.name)

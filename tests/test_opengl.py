@@ -6,8 +6,6 @@ they are skipped only if no OpenGL context can be made.
 
 from __future__ import annotations
 
-import os
-
 import numpy as np
 import pytest
 
@@ -22,19 +20,6 @@ pytestmark = pytest.mark.opengl
 FLOAT32 = 5e-5
 #: Pixels allowed to show a different triangle (none has, so far).
 FEW_PIXELS = 3
-
-
-@pytest.fixture(scope="module")
-def gl():
-    try:
-        from interp import opengl
-
-        opengl.context()
-    except (ImportError, RuntimeError) as error:
-        if os.environ.get("CI"):
-            pytest.fail(f"CI must have OpenGL (EGL + Mesa): {error}")
-        pytest.skip(f"no OpenGL here: {error}")
-    return opengl
 
 
 def draw_both(gl, clip, attributes, triangles, width, height, mode):

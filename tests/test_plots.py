@@ -35,6 +35,12 @@ def make(plot_class):
         return plot_class(figure.subplots(1, 3), width=16, height=12)
     if plot_class in (plots.UVImages,):
         return plot_class(figure.subplots(1, 2), width=16, height=12)
+    if plot_class is plots.OutsideView:
+        return plot_class(figure.add_subplot(projection="3d"), width=16, height=12)
+    if plot_class is plots.FilteringPanels:
+        return plot_class(figure.subplots(1, 3), width=16, height=12)
+    if plot_class is plots.MipmapPyramid:
+        return plot_class(figure.subplots(1, 6))
     small = {"width": 16, "height": 12}
     parameters = inspect.signature(plot_class).parameters
     return plot_class(figure.add_subplot(), **{k: v for k, v in small.items() if k in parameters})

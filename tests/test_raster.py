@@ -7,7 +7,7 @@ import pytest
 
 import interp
 from interp import raster
-from interp.raster import SUBPIXELS
+from interp.raster import MODES, SUBPIXELS
 
 from helpers import random_scene
 from reference import render
@@ -186,6 +186,38 @@ def test_depth_test_in_small_chunks(monkeypatch, chunk):
     np.testing.assert_array_equal(chunked.barycentric, whole.barycentric)
     checked, _ = compare(clip, attributes, triangles, 48, 36, "perspective")
     assert checked > 300
+
+
+@pytest.mark.parametrize("band", [1, 100, 10**9])
+def test_bands_of_any_height_draw_the_same(monkeypatch, band):
+    # rasterize works through the image BAND pixels (whole rows) at a time: one row per band,
+    # a few rows, or the whole image in one band must draw the same, bit for bit, and so must
+    # fragments(). Overlapping triangles and triangles behind the eye, both modes.
+    clip, attributes, triangles = random_scene(np.random.default_rng(5), 30, behind=True)
+    whole = {mode: interp.rasterize(clip, attributes, triangles, 48, 36, mode) for mode in MODES}
+    frags = interp.fragments(clip, attributes, triangles, 48, 36)
+    monkeypatch.setattr(raster, "BAND", band)
+    for mode in MODES:
+        values, covered = interp.rasterize(clip, attributes, triangles, 48, 36, mode)
+        np.testing.assert_array_equal(values, whole[mode][0])
+        np.testing.assert_array_equal(covered, whole[mode][1])
+    banded = interp.fragments(clip, attributes, triangles, 48, 36)
+    np.testing.assert_array_equal(banded.pixel, frags.pixel)
+    np.testing.assert_array_equal(banded.row_item, frags.row_item)
+    np.testing.assert_array_equal(banded.barycentric, frags.barycentric)
+
+
+@pytest.mark.parametrize("mode", MODES)
+def test_rasterize_is_fragments_then_interpolate(mode):
+    # rasterize interpolates along rows (a line per triangle and row), interpolate per fragment
+    # from its barycentrics: the same numbers, to rounding, and the same pixels.
+    camera = interp.Camera(height=1.0, pitch=20, yaw=30, distance=3.0)
+    scene = interp.ground_plane(camera, quads=4)
+    values, covered = interp.rasterize(scene.clip, scene.uv, scene.triangles, 200, 150, mode)
+    frags = interp.fragments(scene.clip, scene.uv, scene.triangles, 200, 150)
+    np.testing.assert_array_equal(covered, frags.covered)
+    np.testing.assert_allclose(values, interp.interpolate(frags, mode), rtol=0, atol=1e-13)
+    assert covered.mean() > 0.5
 
 
 def test_depth_test_nearest_wins_and_first_wins_ties():

@@ -4,25 +4,18 @@ plot that drew it, at the defaults and at settings the lessons' prompts ask for.
 
 from __future__ import annotations
 
-import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
 import interp
-from interp import approximation, depth, lerp, mistakes, shaders, theory
+from interp import approximation, depth, lerp, mipmap, mistakes, shaders, theory
 from interp.plots.attributes import CORNER_COLOURS
 from interp.plots.gpu import LAB_CAMERA, SHADER_COLOURS
 from interp.plots.params import camera_from
 from interp.plots.planes import verdict
 from interp.plots.registry import FIGURES, RESOLUTIONS
 from interp.scenes import LESSON_SIZE, checker_views
-
-
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    plt.close("all")
 
 
 def _camera(p, width, height):
@@ -205,10 +198,85 @@ def approximations(p):
     k, j = list(spans.setting).index(16), list(tess.setting).index(8)
     if spans.divides_per_pixel[k] == 0:
         return ["out of view"]
+
+    def texels(error):  # an exact method's error is rounding: said as 0
+        return "0 (to rounding)" if error < 1e-9 else f"{error:.3g}"
+
     return [
-        f"mean error {spans.mean_error[k]:.3g} texels at {spans.divides_per_pixel[k]:.3f}",
-        f"{tess.mean_error[j]:.3g} texels at {tess.divides_per_pixel[j]:.3f}",
+        f"mean error {texels(spans.mean_error[k])} texels at {spans.divides_per_pixel[k]:.3f}",
+        f"{texels(tess.mean_error[j])} texels at {tess.divides_per_pixel[j]:.3f}",
     ]
+
+
+def _rays_that_hit(camera, width, height, quads, per_side=3):
+    """How many of the outside view's pixel rays meet the quad, from the rasterizer's coverage
+    at their pixels (per_side x per_side pixels spread evenly over the image)."""
+    scene = interp.ground_plane(camera, LESSON_SIZE, quads=quads)
+    _, covered = interp.rasterize(scene.clip, scene.uv, scene.triangles, width, height)
+    spread = (np.arange(per_side) + 0.5) / per_side
+    columns = np.floor(spread * width).astype(int)
+    rows = height - 1 - np.floor(spread * height).astype(int)  # window y is up, rows go down
+    return int(covered[np.ix_(rows, columns)].sum()), per_side**2
+
+
+def _eye(p, width=320, height=240):
+    camera = _camera(p, width, height)
+    side = "above" if p["height"] >= 0 else "below"
+    hits, rays = _rays_that_hit(camera, width, height, p["quads"], p.get("rays", 3))
+    return [
+        f"The eye is {abs(p['height']):.2f} {side} the ground, {p['distance']:.2f} from",
+        f"{hits} of {rays} pixel rays meet the quad",
+    ]
+
+
+def _near_cuts(p, width=320, height=240):
+    camera = _camera(p, width, height)
+    scene = interp.ground_plane(camera, LESSON_SIZE, quads=p["quads"])
+    # a plane's depth is linear, so some of it is nearer than near iff a vertex is
+    cut = np.any(scene.clip[:, 3] < camera.near)
+    return "the near plane cuts part of the quad off" if cut else "the near plane cuts nothing off"
+
+
+def outside_view(p):
+    camera = _camera(p, 320, 240)
+    scene = interp.ground_plane(camera, LESSON_SIZE, quads=p["quads"])
+    frags = interp.fragments(scene.clip, scene.uv, scene.triangles, 320, 240)
+    visible = len(np.unique(frags.clipped.source))
+    return [
+        *_eye(p),
+        f"keeps {visible} of {2 * p['quads'] ** 2} triangles as {len(frags.clipped)} pieces",
+        _near_cuts(p),
+    ]
+
+
+def checkerboards_outside(p):
+    width, height = RESOLUTIONS[p["resolution"]]
+    return checkerboards(p) + _eye(p, width, height)
+
+
+def clipping_outside(p):
+    return [*clipping(p), _near_cuts(p)]
+
+
+def texture_filtering(p):
+    camera = _camera(p, 320, 240)
+    scene = interp.ground_plane(camera, LESSON_SIZE, quads=p["quads"])
+    views = mipmap.filtering_views(scene, 320, 240, int(p["frequency"]), mode=p["mode"])
+    if not views.fragments.covered.any():
+        return ["out of view"]
+    low, high = views.lod.min(), views.lod.max()
+    deepest = 0 if high <= 0 else min(int(np.floor(high)) + 1, 8)  # 256 texels: 8 levels down
+    return [
+        f"λ runs from {low:.2f} to {high:.2f}",
+        f"{np.mean(views.lod <= 0):.0%} of the drawn pixels are magnified",
+        f"down to mipmap level {deepest}",
+    ]
+
+
+def mipmap_pyramid(p):
+    f = int(p["frequency"])
+    sharp = int(np.log2(256 // f))  # the level with one texel a check
+    return [f"{f} x {f} checks of {256 // f} texels", f"level {sharp} still", f"level {sharp + 1}"]
 
 
 #: For each figure: what its readout must say, and the settings to try besides the defaults.
@@ -253,6 +321,28 @@ CHECKS = {
     ),
     "clipping": (clipping, [{"height": -0.5}, {"height": 0.0}, {"distance": 0.0, "near": 0.01}]),
     "approximations": (approximations, [{"roll": 0.0}, {"pitch": -10.0, "height": 4.0}]),
+    "outside-view": (
+        outside_view,
+        [{"pitch": 90.0}, {"height": -0.5}, {"height": 0.3, "distance": 1.0, "quads": 2}],
+    ),
+    "checkerboards-outside": (
+        checkerboards_outside,
+        [{"pitch": 90.0}, {"height": 0.3, "distance": 1.0}, {"resolution": "160 x 120"}],
+    ),
+    "clipping-outside": (
+        clipping_outside,
+        [{"height": 0.05}, {"height": -0.5}, {"distance": 0.0, "pitch": 90.0, "height": 2.0}],
+    ),
+    "texture-filtering": (
+        texture_filtering,
+        [
+            {"height": 2.0, "pitch": 90.0, "distance": 0.0},
+            {"mode": "affine"},
+            {"frequency": "128", "pitch": 11.0},
+            {"pitch": 90.0},
+        ],
+    ),
+    "mipmap-pyramid": (mipmap_pyramid, [{"frequency": "2"}, {"frequency": "128"}]),
 }
 
 

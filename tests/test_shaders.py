@@ -4,8 +4,6 @@ with a real shader that does (interp.opengl's ``vertex_divide``)."""
 
 from __future__ import annotations
 
-import os
-
 import numpy as np
 import pytest
 
@@ -17,19 +15,6 @@ from helpers import random_scene
 
 #: llvmpipe interpolates in float32.
 FLOAT32 = 5e-5
-
-
-@pytest.fixture(scope="module")
-def gl():
-    try:
-        from interp import opengl
-
-        opengl.context()
-    except (ImportError, RuntimeError) as error:
-        if os.environ.get("CI"):
-            pytest.fail(f"CI must have OpenGL (EGL + Mesa): {error}")
-        pytest.skip(f"no OpenGL here: {error}")
-    return opengl
 
 
 def scenes():

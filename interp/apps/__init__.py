@@ -14,8 +14,12 @@ lesson                 apps
 3 the s-t mapping      :func:`st_mapping`
 4 depth                :func:`depth`
 5 attributes           :func:`attributes`, :func:`colour_quad`
-6 checkerboards        :func:`checkerboards`, :func:`uv_images`
-7 triangles and GPUs   :func:`barycentrics`, :func:`clipping`, :func:`approximations`
+6 checkerboards        :func:`checkerboards`, :func:`checkerboards_outside`, :func:`uv_images`,
+                       :func:`outside_view`
+7 triangles            :func:`linear_on_screen`, :func:`barycentrics`
+8 GPUs                 :func:`shader`, :func:`clipping`, :func:`clipping_outside`,
+                       :func:`approximations`
+9 texture filtering    :func:`texture_filtering`, :func:`mipmap_pyramid`
 =====================  =====================================================================
 
 :func:`presentation` makes later apps larger, for a projector.
@@ -63,9 +67,25 @@ def checkerboards() -> App:
     return App(registry.Checkerboards)
 
 
+def checkerboards_outside() -> App:
+    """Lesson 6's app: the checkerboards beside the scene seen from outside (orbit it with the
+    mouse)."""
+    return App(registry.CheckerboardsOutside)
+
+
 def uv_images() -> App:
     """Lesson 6's app: u and v as images."""
     return App(registry.UVImagesFigure)
+
+
+def outside_view() -> App:
+    """Lesson 6's app: camera, frustum, pixel rays and quad seen from outside, alone."""
+    return App(registry.OutsideViewFigure)
+
+
+def linear_on_screen() -> App:
+    """Lesson 7's app: which quantities are planes over the screen (1/w, u/w), which not (w, u)."""
+    return App(registry.LinearOnScreen)
 
 
 def barycentrics() -> App:
@@ -73,14 +93,36 @@ def barycentrics() -> App:
     return App(registry.Barycentrics)
 
 
+def shader() -> App:
+    """Lesson 8's app: what a fragment shader receives, smooth beside the other qualifiers."""
+    return App(registry.Shader)
+
+
 def clipping() -> App:
-    """Lesson 7's app: near-plane clipping as the camera moves through the plane."""
+    """Lesson 8's app: near-plane clipping as the camera moves through the plane."""
     return App(registry.Clipping)
 
 
+def clipping_outside() -> App:
+    """Lesson 8's app: the clipping app beside the scene seen from outside: what the near plane
+    cuts off, and the vertices clipping makes."""
+    return App(registry.ClippingOutside)
+
+
 def approximations() -> App:
-    """Lesson 7's app: the approximation lab."""
+    """Lesson 8's app: the approximation lab."""
     return App(registry.Approximations)
+
+
+def texture_filtering() -> App:
+    """Lesson 9's app: pixel footprints in the texture, the mip level per pixel, the filtered
+    image."""
+    return App(registry.TextureFiltering)
+
+
+def mipmap_pyramid() -> App:
+    """Lesson 9's app: the checkerboard's mipmap levels."""
+    return App(registry.MipmapPyramidFigure)
 
 
 #: Every app, by name (the figure's name with underscores), for tests and notebooks.
@@ -93,9 +135,16 @@ ALL = {
     "colour_quad": colour_quad,
     "checkerboards": checkerboards,
     "uv_images": uv_images,
+    "checkerboards_outside": checkerboards_outside,
+    "outside_view": outside_view,
+    "linear_on_screen": linear_on_screen,
     "barycentrics": barycentrics,
+    "shader": shader,
     "clipping": clipping,
+    "clipping_outside": clipping_outside,
     "approximations": approximations,
+    "texture_filtering": texture_filtering,
+    "mipmap_pyramid": mipmap_pyramid,
 }
 
 __all__ = [
@@ -105,12 +154,19 @@ __all__ = [
     "attributes",
     "barycentrics",
     "checkerboards",
+    "checkerboards_outside",
     "clipping",
+    "clipping_outside",
     "colour_quad",
     "depth",
+    "linear_on_screen",
+    "mipmap_pyramid",
+    "outside_view",
     "presentation",
     "projecting_a_line",
+    "shader",
     "st_mapping",
+    "texture_filtering",
     "the_problem",
     "uv_images",
 ]

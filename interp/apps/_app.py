@@ -22,7 +22,7 @@ from html import escape
 import ipywidgets as widgets
 import matplotlib.pyplot as plt
 import numpy as np
-from IPython.display import HTML, display
+from IPython.display import HTML, Javascript, display
 
 from interp._allocator import keep_freed_memory
 from interp.apps._live import DRAW_LOCK, Blitter, Coalescer, cheap_frames, take_turns
@@ -33,6 +33,30 @@ from interp.plots.registry import LessonFigure
 #: Presentation mode: larger fonts and controls for a projector (see :func:`presentation`);
 #: also on when the environment variable INTERP_PRESENTATION is 1 (``make present`` sets it).
 _PRESENTATION = {"on": os.environ.get("INTERP_PRESENTATION") == "1"}
+
+
+#: Names every slider for screen readers. ipywidgets draws a slider's handle as an element of
+#: role "slider" (with its value) but leaves it nameless, and the description beside it is not
+#: tied to it; this sets the handle's ``aria-label`` to that description, for sliders drawn now
+#: and later (one observer per page).
+SLIDER_NAMES_JS = """
+(() => {
+  if (window.interpNameSliders) { window.interpNameSliders(); return; }
+  const nameSliders = () => {
+    for (const box of document.querySelectorAll('.widget-slider')) {
+      const label = box.querySelector('.widget-label');
+      const text = label ? label.textContent.trim() : '';
+      if (!text) continue;
+      for (const handle of box.querySelectorAll('[role="slider"]')) {
+        if (handle.getAttribute('aria-label') !== text) handle.setAttribute('aria-label', text);
+      }
+    }
+  };
+  window.interpNameSliders = nameSliders;
+  new MutationObserver(nameSliders).observe(document.body, {childList: true, subtree: true});
+  nameSliders();
+})();
+"""
 
 
 def presentation(on: bool = True) -> None:
@@ -194,6 +218,7 @@ class App:
     def _ipython_display_(self) -> None:
         if _PRESENTATION["on"]:  # larger prose and controls on the whole page
             display(HTML(PRESENTATION_CSS))
+        display(Javascript(SLIDER_NAMES_JS))
         if self.live:
             display(self.widget)
         else:  # a picture with alt text, the result as text, then the controls

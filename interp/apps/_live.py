@@ -69,9 +69,28 @@ def static_key(figure: Figure) -> tuple:
                 id(legend),
                 tuple(t.get_text() for t in legend.get_texts()) if legend else (),
                 len(ax.texts),
+                _viewpoint(ax),
             )
         )
     return tuple(key)
+
+
+def _viewpoint(ax: object) -> tuple:
+    """Where a 3D axes is seen from, which the mouse changes by orbiting and zooming (its
+    panes, grid and ticks are in the saved background); () for 2D axes.
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> ax = Figure().add_subplot(projection="3d")
+    >>> before = _viewpoint(ax)
+    >>> ax.view_init(elev=10.0, azim=20.0)
+    >>> _viewpoint(ax) == before
+    False
+    """
+    if getattr(ax, "name", "") != "3d":
+        return ()
+    return (ax.elev, ax.azim, ax.roll, ax.get_zlim(), tuple(ax.get_box_aspect()), ax._focal_length)
 
 
 class Blitter:

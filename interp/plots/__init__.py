@@ -8,8 +8,10 @@ from interp.plots._style import AFFINE, CORRECT, STYLE, styled
 from interp.plots.attributes import ClipVertexMistake, ColourTriangle, MistakesAlongALine
 from interp.plots.checker import CheckerPanels, UVImages
 from interp.plots.depth import DepthAcross, DepthPrecision
+from interp.plots.filtering import FilteringPanels, MipmapPyramid
 from interp.plots.gpu import ApproximationLab, ClippingView
 from interp.plots.line import GapPlot, ImageStrip, LineView, STCurve, STFamily
+from interp.plots.outside import OutsideView
 
 __all__ = [
     "AFFINE",
@@ -22,10 +24,13 @@ __all__ = [
     "ColourTriangle",
     "DepthAcross",
     "DepthPrecision",
+    "FilteringPanels",
     "GapPlot",
     "ImageStrip",
     "LineView",
+    "MipmapPyramid",
     "MistakesAlongALine",
+    "OutsideView",
     "STCurve",
     "STFamily",
     "UVImages",

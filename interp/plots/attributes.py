@@ -180,7 +180,9 @@ class ColourTriangle(Plot):
             scene.clip, CORNER_COLOURS, triangles, self.width, self.height, mode
         )
         self.image.set_data(np.where(covered[..., None], np.clip(colours, 0, 1), 1.0))
-        self.ax.set_title(mode)
+        # One triangle: its colours are its weights, named as a shader and lesson 7 name them.
+        weights = {"affine": "noperspective (b)", "perspective": "smooth (λ)"}
+        self.ax.set_title(mode if self.whole_quad else weights.get(mode, mode))
 
     @property
     def dynamic(self) -> list:

@@ -36,10 +36,15 @@ def verdict(fits: Sequence[theory.PlaneFit]) -> str:
     'is a plane on each triangle'
     >>> verdict([theory.PlaneFit(np.zeros(3), 0.21, 100), theory.PlaneFit(np.zeros(3), 0, 0)])
     'is not a plane: off by up to 21% of its range'
+    >>> verdict([theory.PlaneFit(np.zeros(3), 0, 240, on_a_line=True)])
+    'cannot be judged: the quad covers a single line of pixels'
     """
     seen = [f for f in fits if f.pixels >= 3]
     if not seen:
         return "is not in view"
+    if all(f.on_a_line for f in seen):
+        return "cannot be judged: the quad covers a single line of pixels"
+    seen = [f for f in seen if not f.on_a_line]
     worst = max(f.misfit for f in seen)
     if worst < 1e-9:
         return "is a plane on each triangle"

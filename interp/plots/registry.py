@@ -19,11 +19,12 @@ import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.figure import Figure, SubFigure
 
-from interp import depth, lerp, mistakes
+from interp import depth, lerp, mipmap, mistakes
 from interp.plots._base import Plot
 from interp.plots.attributes import ClipVertexMistake, ColourTriangle, MistakesAlongALine
 from interp.plots.checker import CheckerPanels, UVImages
 from interp.plots.depth import DepthAcross, DepthPrecision
+from interp.plots.filtering import FILTERS, FilteringPanels, MipmapPyramid
 from interp.plots.gpu import (
     LAB_CAMERA,
     SHADER_OUTPUTS,
@@ -32,6 +33,7 @@ from interp.plots.gpu import (
     ShaderView,
 )
 from interp.plots.line import GapPlot, ImageStrip, LineView, STCurve, STFamily
+from interp.plots.outside import SHOWS, VIEWS, OutsideView
 from interp.plots.params import Param, camera_from, camera_params, table
 from interp.plots.planes import PANEL_QUANTITIES, PlanePanels, verdict
 from interp.scenes import LESSON_SIZE, ground_plane
@@ -548,6 +550,154 @@ class UVImagesFigure(LessonFigure):
         )
 
 
+# The scene from outside (issue 11): beside the camera's image in lessons 6 and 8. Each figure
+# adds its 3D axes before its other axes: a 3D box's tick labels may reach past its axes, and
+# drawn first they lie under the neighbouring panels in a full draw as in a blitted one (drawn
+# last, a full draw would put them over a neighbour's image, a blit under it).
+
+
+def _view_param(default: str = "three-quarter") -> Param:
+    return Param(default, options=tuple(VIEWS), label="seen from")
+
+
+def outside_eye(view: OutsideView) -> str:
+    """Where the eye is and how many of the outside view's pixel rays meet the quad.
+
+    Examples
+    --------
+    >>> from interp.camera import Camera
+    >>> ax = Figure().add_subplot(projection="3d")
+    >>> print(outside_eye(OutsideView(ax, Camera(height=1.0, pitch=90.0))))
+    The eye is 1.00 above the ground, 3.00 from the quad's centre horizontally; 0 of 9 pixel \
+rays meet the quad.
+    """
+    camera = view.params["camera"]
+    c = view.counts
+    side = "above" if camera.height >= 0 else "below"
+    return (
+        f"The eye is {abs(camera.height):.2f} {side} the ground, {camera.distance:.2f} from the "
+        f"quad's centre horizontally; {c['hits']} of {c['rays']} pixel rays meet the quad."
+    )
+
+
+def outside_clipping(view: OutsideView) -> str:
+    """What clipping does, as the outside view shows it.
+
+    Examples
+    --------
+    >>> from interp.camera import Camera
+    >>> ax = Figure().add_subplot(projection="3d")
+    >>> print(outside_clipping(OutsideView(ax, Camera(height=0.3, distance=1.0), quads=2)))
+    Clipping keeps 7 of 8 triangles as 15 pieces, with 12 new vertices; the near plane cuts \
+part of the quad off.
+    """
+    c = view.counts
+    total = 2 * int(view.params["quads"]) ** 2
+    near = "part of the quad off" if c["cut off"] else "nothing off"
+    return (
+        f"Clipping keeps {c['visible triangles']} of {total} triangles as {c['pieces']} pieces, "
+        f"with {c['new vertices']} new vertices; the near plane cuts {near}."
+    )
+
+
+class OutsideViewFigure(LessonFigure):
+    name = "outside-view"
+    lesson = 6
+    title = "The camera seen from outside"
+    description = "camera, frustum, image plane, pixel rays and ground quad in world space"
+    caption = (
+        "The lesson's camera seen from outside: the eye, its frustum (near plane bold, cut-off "
+        "dashed where the far plane lies far beyond), the image plane one unit ahead, and rays "
+        "through nine pixels of a 320 x 240 image: solid with a dot where they meet the "
+        "checkerboard quad, dotted where they pass above its far edge. (Lesson 6)"
+    )
+    size = (7.5, 4.6)
+    print_size = (WIDE, 3.4)
+    PARAMS = table(
+        **camera_params(),
+        quads=Param(1, 1, 16, 1, "quads per side"),
+        frequency=Param(8, 1, 64, 1, "checks per side"),
+        ground=Param("checkerboard", options=SHOWS, label="ground shows"),
+        view=_view_param(),
+        rays=Param(3, 1, 8, 1, "rays per side"),
+    )
+
+    def build(self, figure: Figure | SubFigure) -> None:
+        grid = figure.add_gridspec(1, 2, width_ratios=[2.4, 1])
+        self.outside = OutsideView(
+            figure.add_subplot(grid[0, 0], projection="3d"),
+            legend_ax=figure.add_subplot(grid[0, 1]),
+        )
+
+    def redraw(self) -> None:
+        p = self.params
+        self.outside.update(
+            camera=camera_from(p),
+            quads=p["quads"],
+            frequency=p["frequency"],
+            show=p["ground"],
+            view=p["view"],
+            rays=p["rays"],
+        )
+
+    def readout(self) -> str:
+        return f"{outside_eye(self.outside)} {outside_clipping(self.outside)}"
+
+
+class CheckerboardsOutside(Checkerboards):
+    name = "checkerboards-outside"
+    lesson = 6
+    title = "Checkerboards, and the scene from outside"
+    description = "the checkerboard app beside a 3D view of camera, frustum, rays and quad"
+    caption = (
+        "Left: the scene from outside the camera: the checkerboard quad, the eye and its "
+        "frustum (near plane bold, far plane or cut-off dashed), the image plane, and rays "
+        "through nine pixels, solid where they meet the quad. Right: the quad drawn affinely and "
+        "perspective-correctly by that camera, and how far apart their texture coordinates "
+        "are, in texels. The same sliders move both. (Lesson 6)"
+    )
+    size = (9.0, 5.2)
+    print_size = (WIDE, 3.8)
+    PARAMS = table(
+        **{
+            **Checkerboards.PARAMS,  # the affine image is not on the left here, but first
+            "mode": Param("affine", options=("affine", "subdivided"), label="first image"),
+        },
+        ground=Param("checkerboard", options=SHOWS, label="outside: ground shows"),
+        view=_view_param(),
+    )
+
+    def build(self, figure: Figure | SubFigure) -> None:
+        grid = figure.add_gridspec(2, 3, width_ratios=[1.6, 1, 1])
+        self.outside = OutsideView(  # the 3D axes first: see the notes above
+            figure.add_subplot(grid[:, 0], projection="3d"),
+            legend_ax=figure.add_subplot(grid[1, 2]),
+        )
+        self.panels = CheckerPanels(
+            [figure.add_subplot(grid[0, 1]), figure.add_subplot(grid[0, 2]),
+             figure.add_subplot(grid[1, 1])]
+        )  # fmt: skip
+
+    def redraw(self) -> None:
+        super().redraw()
+        for ax in self.panels.axes:  # the panels are narrower than in Checkerboards
+            ax.title.set_fontsize("small")
+        p = self.params
+        width, height = RESOLUTIONS[str(p["resolution"])]
+        self.outside.update(
+            camera=camera_from(p),
+            width=width,
+            height=height,
+            quads=p["quads"],
+            frequency=round(p["frequency"]),
+            show=p["ground"],
+            view=p["view"],
+        )
+
+    def readout(self) -> str:
+        return f"{super().readout()} {outside_eye(self.outside)}"
+
+
 class LinearOnScreen(LessonFigure):
     name = "linear-on-screen"
     lesson = 7
@@ -716,6 +866,52 @@ class Clipping(LessonFigure):
         )
 
 
+class ClippingOutside(Clipping):
+    name = "clipping-outside"
+    lesson = 8
+    title = "Near-plane clipping, seen from outside"
+    description = "the clipping app beside a 3D view of what the near plane cuts off"
+    caption = (
+        "Left: the camera's image, with the outline of every piece clipping made. Right: the "
+        "same from outside: the quad's triangles, the pieces the camera draws (outlined), the "
+        "vertices clipping made (diamonds) and the part of the quad the near plane cuts off "
+        "(hatched: nearer than the near plane, or behind the eye). (Lesson 8)"
+    )
+    size = (9.0, 4.6)
+    print_size = (WIDE, 3.4)
+    PARAMS = table(**Clipping.PARAMS, view=_view_param())
+
+    def build(self, figure: Figure | SubFigure) -> None:
+        grid = figure.add_gridspec(2, 2, width_ratios=[1, 1.2], height_ratios=[1.1, 1])
+        outside = figure.add_subplot(grid[:, 1], projection="3d")  # first: see the notes above
+        self.view = ClippingView(figure.add_subplot(grid[0, 0]))
+        self.outside = OutsideView(
+            outside, legend_ax=figure.add_subplot(grid[1, 0]), show="triangles"
+        )
+
+    def redraw(self) -> None:
+        super().redraw()
+        self.view.ax.title.set_fontsize("small")  # the panel is narrower than in Clipping
+        p = self.params
+        image = self.view.params
+        self.outside.update(
+            camera=camera_from(p),
+            width=image["width"],
+            height=image["height"],
+            quads=p["quads"],
+            frequency=image["frequency"],
+            view=p["view"],
+        )
+
+    def readout(self) -> str:
+        c = self.outside.counts
+        near = "part of the quad off" if c["cut off"] else "nothing off"
+        return (
+            f"{super().readout()} Clipping made {c['new vertices']} new vertices; the near "
+            f"plane cuts {near}."
+        )
+
+
 class Approximations(LessonFigure):
     name = "approximations"
     lesson = 8
@@ -742,10 +938,109 @@ class Approximations(LessonFigure):
         quads8 = int(np.flatnonzero(tess.setting == 8)[0])
         if spans.divides_per_pixel[span16] == 0:
             return "Nothing is drawn: the plane is out of view."
+
+        def texels(error: float) -> str:
+            return "0 (to rounding)" if error < 1e-9 else f"{error:.3g}"
+
         return (
-            f"Spans of 16 pixels: mean error {spans.mean_error[span16]:.3g} texels at "
+            f"Spans of 16 pixels: mean error {texels(spans.mean_error[span16])} texels at "
             f"{spans.divides_per_pixel[span16]:.3f} divides per pixel; 8 x 8 affine quads: "
-            f"{tess.mean_error[quads8]:.3g} texels at {tess.divides_per_pixel[quads8]:.3f}."
+            f"{texels(tess.mean_error[quads8])} texels at {tess.divides_per_pixel[quads8]:.3f}."
+        )
+
+
+# ---------------------------------------------------------------------------- lesson 9
+
+#: Checks per side the filtering figures offer: powers of two, so the mipmap halves evenly.
+FREQUENCIES = tuple(str(2**k) for k in range(1, 8))
+#: The filtering lesson's camera: low, looking far, so the far checks are smaller than pixels.
+FILTERING_CAMERA = {"height": 0.6, "pitch": 10.0}
+
+
+class TextureFiltering(LessonFigure):
+    name = "texture-filtering"
+    lesson = 9
+    title = "Texture filtering: footprints, mip levels, trilinear"
+    description = "pixel footprints in the texture, OpenGL's level of detail, the filtered image"
+    caption = (
+        "Left: the footprints of a grid of pixels in a 256 x 256-texel texture of 64 x 64 checks "
+        "(parallelograms, drawn 8 times their size): small and square near the camera, long "
+        "and thin far away. Middle: OpenGL's level of detail λ = log2 of the longer footprint "
+        "edge in texels, per pixel, one colour per mipmap level. Right: the image with "
+        "trilinear filtering from the mipmap (GL_LINEAR_MIPMAP_LINEAR). (Lesson 9)"
+    )
+    size = (9.0, 3.3)
+    print_size = (WIDE, 2.3)
+    PARAMS = table(
+        **camera_params(**FILTERING_CAMERA),
+        frequency=Param("64", options=FREQUENCIES, label="checks per side"),
+        filter=Param("trilinear", options=tuple(FILTERS), label="right panel"),
+        mode=Param("perspective", options=("perspective", "affine"), label="interpolation"),
+        quads=Param(1, 1, 16, 1, "quads per side"),
+        scale=Param(8.0, 1.0, 32.0, 1.0, "footprints drawn x", fmt=".0f"),
+    )
+
+    def build(self, figure: Figure | SubFigure) -> None:
+        self.panels = FilteringPanels(figure.subplots(1, 3))
+
+    def redraw(self) -> None:
+        p = self.params
+        self.panels.update(
+            camera=camera_from(p),
+            frequency=int(p["frequency"]),
+            filter=p["filter"],
+            mode=p["mode"],
+            quads=p["quads"],
+            scale=p["scale"],
+        )
+
+    def readout(self) -> str:
+        views = self.panels.views
+        drawn = views.lod[views.lod > -float("inf")]
+        if not drawn.size:
+            return "Nothing is drawn: the quad is out of view."
+        low, high = float(drawn.min()), float(drawn.max())
+        magnified = float((drawn <= 0).mean())
+        last = len(mipmap.mipmap(np.zeros((views.size, views.size)))) - 1
+        deepest = 0 if high <= 0 else min(int(np.floor(high)) + 1, last)
+        return (
+            f"λ runs from {low:.2f} to {high:.2f}: {magnified:.0%} of the drawn pixels are "
+            f"magnified (λ <= 0: level 0 alone); trilinear filtering reaches down to mipmap "
+            f"level {deepest}."
+        )
+
+
+class MipmapPyramidFigure(LessonFigure):
+    name = "mipmap-pyramid"
+    lesson = 9
+    title = "A mipmap"
+    description = "the checkerboard texture and its first halvings, each texel the mean of four"
+    caption = (
+        "Levels 0 to 5 of the mipmap of a 16 x 16 checkerboard in a 256 x 256 texture, each "
+        "drawn at the same size: every texel of a level is the mean of 2 x 2 texels of the one "
+        "before. Once a check is smaller than a texel (level 5 here) the board is uniform grey: "
+        "what a pixel far away should show. (Lesson 9)"
+    )
+    size = (9.0, 2.2)
+    print_size = (WIDE, 1.5)
+    PARAMS = table(frequency=Param("16", options=FREQUENCIES, label="checks per side"))
+
+    def build(self, figure: Figure | SubFigure) -> None:
+        self.pyramid = MipmapPyramid(figure.subplots(1, 6))
+
+    def redraw(self) -> None:
+        self.pyramid.update(frequency=int(self.params["frequency"]))
+
+    def readout(self) -> str:
+        frequency = int(self.params["frequency"])
+        levels = mipmap.mipmap(mipmap.checker_texture(frequency))
+        grey = next(k for k, level in enumerate(levels) if np.all(level == 0.5))
+        shown = len(self.pyramid.axes)
+        beyond = "" if grey < shown else f", beyond the levels shown (0 to {shown - 1})"
+        return (
+            f"{frequency} x {frequency} checks of {len(levels[0]) // frequency} texels each: "
+            f"level {grey - 1} still has one texel a check, and from level {grey} on every "
+            f"texel is 0.5, uniform grey{beyond}."
         )
 
 
@@ -761,10 +1056,15 @@ FIGURES: dict[str, type[LessonFigure]] = {
         ColourQuad,
         Checkerboards,
         UVImagesFigure,
+        CheckerboardsOutside,
+        OutsideViewFigure,
         LinearOnScreen,
         Barycentrics,
         Shader,
         Clipping,
+        ClippingOutside,
         Approximations,
+        TextureFiltering,
+        MipmapPyramidFigure,
     )
 }
