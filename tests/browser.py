@@ -281,19 +281,24 @@ KERNEL_RUN = """async (code) => {
 #: ``apps.App(registry.CLASS)`` (a registry figure without an app function of its own).
 APP_CELL = r"^apps\.(?:(\w+)\(\)|App\(registry\.(\w+)\))\s*$"
 
-#: Each code cell of the notebook on show that makes an app: tag its output with
-#: ``data-app=NAME`` and return ``[name, execution count]``. ``names`` maps what a cell calls
+#: Each code cell of the notebook on show that makes an app: tag its output area with
+#: ``data-app=NAME`` and return ``[name, execution count]``; an app a notebook makes again is
+#: ``NAME@2``, ``NAME@3``... ``names`` maps what a cell calls
 #: (an app function or a registry class) to the app's name (see :func:`app_name`).
 TAG_APPS = """(names) => {
     const panel = window.jupyterapp.shell.currentWidget;
-    const found = [];
+    const found = [], seen = {};
     panel.content.widgets.forEach((cell) => {
         if (cell.model.type !== 'code') return;
         const m = new RegExp(APP_CELL, 'm').exec(cell.model.sharedModel.getSource());
         if (!m) return;
-        const name = names[m[1] || m[2]] || m[1] || m[2];
-        const output = cell.node.querySelector('.jp-OutputArea-output');
-        if (output) output.setAttribute('data-app', name);
+        const base = names[m[1] || m[2]] || m[1] || m[2];
+        seen[base] = (seen[base] || 0) + 1;
+        const name = seen[base] === 1 ? base : base + '@' + seen[base];
+        // The whole output area: an app's outputs are a script (naming the sliders), in
+        // presentation mode a style, then the widget.
+        const output = cell.node.querySelector('.jp-Cell-outputArea') || cell.node;
+        output.setAttribute('data-app', name);
         found.push([name, cell.model.executionCount]);
     });
     return found;
@@ -379,24 +384,31 @@ def app_names() -> dict[str, str]:
     return {cls.__name__: app_name(cls.__name__) for cls in registry.FIGURES.values()}
 
 
+def base_app(name: str) -> str:
+    """The app an instance name is of: ``texture_filtering@2`` -> ``texture_filtering``."""
+    return name.split("@")[0]
+
+
 def figure_of(name: str):
     """The registry figure class an app draws (app names use underscores, figures hyphens)."""
     from interp.plots import registry
 
-    return registry.FIGURES[name.replace("_", "-")]
+    return registry.FIGURES[base_app(name).replace("_", "-")]
 
 
 def lesson_apps(notebook: str, folder: Path | None = None) -> list[str]:
     """The apps a lesson makes, in order (its cells that are just ``apps.NAME()`` or
-    ``apps.App(registry.CLASS)``)."""
+    ``apps.App(registry.CLASS)``); one made again is ``NAME@2`` (as :data:`TAG_APPS` tags it)."""
     import re
 
     cells = json.loads(((folder or ROOT / "lessons") / notebook).read_text())["cells"]
-    names = []
+    names: list[str] = []
     for cell in cells:
         if cell["cell_type"] == "code":
             for function, cls in re.findall(APP_CELL, "".join(cell["source"]), re.M):
-                names.append(app_name(function or cls))
+                name = app_name(function or cls)
+                made = sum(base_app(n) == name for n in names)
+                names.append(name if not made else f"{name}@{made + 1}")
     return names
 
 
@@ -514,8 +526,8 @@ def kernel_run(page, code: str) -> str:
 
 
 def app_root(page, name: str):
-    """The output of the cell that made app ``name`` (after :func:`open_lesson`)."""
-    return page.locator(f"{VISIBLE} [data-app={name}]").first
+    """The outputs of the cell that made app ``name`` (after :func:`open_lesson`)."""
+    return page.locator(f'{VISIBLE} [data-app="{name}"]').first
 
 
 def figure_canvas(root):

@@ -33,6 +33,7 @@ from browser import (
     ROOT,
     VISIBLE,
     app_root,
+    base_app,
     canvas_pixels,
     chromium,
     endpoint_a,
@@ -56,19 +57,33 @@ from browser import (
     write_all_apps_notebook,
 )
 
+from interp import apps
+
 pytestmark = pytest.mark.browser
 
 playwright_api = sync_api()  # skips without Playwright, but not in CI
 
+#: Every lesson and the apps it makes, in order; an app a lesson makes twice is NAME@2.
 LESSONS = lessons()
+#: Apps of ``interp.apps.ALL`` that no lesson makes are tested from a notebook of their own.
+MORE_APPS = "more_apps.ipynb"
+UNUSED = [
+    name for name in apps.ALL if name not in {base_app(n) for ns in LESSONS.values() for n in ns}
+]
+if UNUSED:
+    LESSONS[MORE_APPS] = UNUSED
 LESSON_OF = {name: notebook for notebook, names in LESSONS.items() for name in names}
+#: Every app as made on a page (``texture_filtering`` and ``texture_filtering@2``...).
 APPS = list(LESSON_OF)
+#: Every app once, in lesson order (for the Voilà page).
+UNIQUE = list(dict.fromkeys(base_app(name) for name in APPS))
 
 #: At most this fraction of a figure's pixels may differ from the app drawn in the kernel.
 TOLERANCE = 0.001
 
-#: The slider moved in each app: one that changes the whole figure.
-SLIDER = {
+#: The control moved in each app: one that changes the whole figure (a slider, else a
+#: drop-down list).
+CONTROL = {
     "the_problem": "A_w",
     "projecting_a_line": "A_w",
     "st_mapping": "w2",
@@ -76,12 +91,17 @@ SLIDER = {
     "attributes": "w2",
     "colour_quad": "pitch",
     "checkerboards": "pitch",
+    "checkerboards_outside": "pitch",
     "uv_images": "pitch",
+    "outside_view": "pitch",
     "linear_on_screen": "pitch",
     "barycentrics": "pitch",
     "shader": "pitch",
     "clipping": "pitch",
+    "clipping_outside": "pitch",
     "approximations": "pitch",
+    "texture_filtering": "pitch",
+    "mipmap_pyramid": "frequency",
 }
 
 #: Lessons whose figures went missing after some Run Alls: run again in fresh kernels.
@@ -89,17 +109,16 @@ FLAKY_LESSONS = ("08_gpus.ipynb",)
 REPEAT = int(os.environ.get("INTERP_BROWSER_REPEAT", "2"))
 
 
-def test_every_app_is_in_a_lesson_and_tested():
-    from interp import apps
+def test_every_app_is_tested():
     from interp.plots import registry
 
-    assert set(apps.ALL) <= set(APPS), f"apps in no lesson: {set(apps.ALL) - set(APPS)}"
-    lesson_figures = {name.replace("_", "-") for name in APPS}
-    assert lesson_figures <= set(registry.FIGURES), "a lesson makes an app of no known figure"
-    assert len(APPS) == len(set(APPS)), "an app is made twice: tests could not tell them apart"
-    assert sorted(SLIDER) == sorted(APPS), "every app needs its slider in SLIDER"
-    for name in APPS:
-        assert SLIDER[name] in figure_of(name).PARAMS
+    assert set(apps.ALL) <= {base_app(name) for name in APPS}
+    assert {base_app(name).replace("_", "-") for name in APPS} <= set(registry.FIGURES), (
+        "a lesson makes an app of no known figure"
+    )
+    assert sorted(CONTROL) == sorted(UNIQUE), "every app needs its control in CONTROL"
+    for name in UNIQUE:
+        assert CONTROL[name] in figure_of(name).PARAMS
 
 
 # ---------------------------------------------------------------------------------- fixtures
@@ -116,18 +135,22 @@ def browser():
 
 @pytest.fixture(scope="module")
 def lab(tmp_path_factory):
-    with server("lab", tmp_path_factory.mktemp("lab")) as url:
+    """JupyterLab on a copy of the lessons, plus :data:`MORE_APPS`."""
+    workdir = tmp_path_factory.mktemp("lab")
+    with server("lab", workdir) as url:
+        if UNUSED:
+            write_all_apps_notebook(workdir / "lessons" / MORE_APPS, UNUSED)
         yield url
 
 
 @pytest.fixture(scope="module")
 def voila(tmp_path_factory):
-    """Voilà in presentation mode on the lessons, plus ``all_apps.ipynb``: every app, in the
-    order of the lessons, on one page (Voilà lays out every notebook alike, and one page
-    runs one kernel instead of seven)."""
+    """Voilà in presentation mode on the lessons, plus ``all_apps.ipynb``: every app once, in
+    the order of the lessons, on one page (Voilà lays out every notebook alike, and one page
+    runs one kernel instead of ten)."""
     workdir = tmp_path_factory.mktemp("voila")
     with server("voila", workdir, env={"INTERP_PRESENTATION": "1"}) as url:
-        write_all_apps_notebook(workdir / "lessons" / "all_apps.ipynb", APPS)
+        write_all_apps_notebook(workdir / "lessons" / "all_apps.ipynb", UNIQUE)
         yield f"{url}/voila/render/all_apps.ipynb"
 
 
@@ -236,29 +259,47 @@ def test_kernels_import_this_checkouts_interp(lesson, request):
 
 
 @pytest.mark.parametrize("name", APPS)
-def test_app_appears_and_follows_its_slider(lesson, request, name):
+def test_app_appears_and_follows_its_control(lesson, request, name):
     page, counts = lesson(LESSON_OF[name])
     request.node.page_on_show = page
     root = app_root(page, name)
     canvas = figure_canvas(root)
     before = assert_is_the_apps_figure(page, canvas, counts[name], "after Run All")
-    param = figure_of(name).PARAMS[SLIDER[name]]
-    slider = slider_for(root, param.label)
-    slider.scroll_into_view_if_needed()
+    key = CONTROL[base_app(name)]
+    param = figure_of(name).PARAMS[key]
     shown_before = canvas_pixels(canvas)
-    up = float(before[SLIDER[name]]) + 10 * param.step <= param.high
-    drag_by(page, slider.locator(".noUi-handle"), 30 if up else -30)
+    if param.options is None:  # drag the slider's handle with the mouse
+        control = slider_for(root, param.label)
+        control.scroll_into_view_if_needed()
+        up = float(before[key]) + 10 * param.step <= param.high
+        drag_by(page, control.locator(".noUi-handle"), 30 if up else -30)
+    else:  # choose the next option of the drop-down list
+        control = dropdown_for(root, param.label)
+        control.scroll_into_view_if_needed()
+        options = [str(option) for option in param.options]
+        choice = options[(options.index(before[key]) + 1) % len(options)]
+        control.locator("select").select_option(label=choice)
     wait_idle(page, quiet_ms=500, timeout=60)
     shown_after = canvas_pixels(canvas)
     assert shown_after.shape == shown_before.shape
-    assert (shown_after != shown_before).any(), "moving the slider did not change the figure"
-    after = assert_is_the_apps_figure(page, canvas, counts[name], "after the slider moved")
-    assert after[SLIDER[name]] != before[SLIDER[name]], "the slider's value did not change"
-    readout = float(slider.locator(".widget-readout").inner_text())
-    assert abs(readout - float(after[SLIDER[name]])) <= param.step / 2 + 1e-9, (
-        f"the slider shows {readout}, the kernel has {after[SLIDER[name]]}"
-    )
+    assert (shown_after != shown_before).any(), f"moving {key} did not change the figure"
+    after = assert_is_the_apps_figure(page, canvas, counts[name], f"after {key} moved")
+    assert after[key] != before[key], f"{key}'s value did not change"
+    if param.options is None:
+        readout = float(control.locator(".widget-readout").inner_text())
+        assert abs(readout - float(after[key])) <= param.step / 2 + 1e-9, (
+            f"the slider shows {readout}, the kernel has {after[key]}"
+        )
+    else:
+        shown = control.locator("select").evaluate("s => s.options[s.selectedIndex].text")
+        assert shown == after[key], f"the list shows {shown}, the kernel has {after[key]}"
     assert_no_errors(page)
+
+
+def dropdown_for(root, label: str):
+    """The drop-down list of an app whose description is exactly ``label``."""
+    text = root.page.get_by_text(label, exact=True)
+    return root.locator(".widget-dropdown").filter(has=text).first
 
 
 @pytest.mark.parametrize("name", ["the_problem", "projecting_a_line"])
@@ -376,13 +417,13 @@ def voila_page(browser, voila):
         lambda route: route.fulfill(status=200, content_type="text/css", body=""),
     )
     page = new_page(context)
-    open_voila_apps(page, voila, APPS)
+    open_voila_apps(page, voila, UNIQUE)
     yield page
     context.close()
 
 
 @pytest.mark.parametrize("size", [(1280, 720), (1920, 1080)], ids=["1280x720", "1920x1080"])
-@pytest.mark.parametrize("name", APPS)
+@pytest.mark.parametrize("name", UNIQUE)
 def test_fits_voila_presentation(voila_page, request, name, size):
     page = voila_page
     request.node.page_on_show = page
@@ -390,7 +431,7 @@ def test_fits_voila_presentation(voila_page, request, name, size):
         page.set_viewport_size({"width": size[0], "height": size[1]})
         page.wait_for_timeout(300)  # the page lays itself out again
     where = f"Voilà presentation at {size[0]}x{size[1]}"
-    assert_fits(page.locator(f"[data-app={name}]").first, where)
+    assert_fits(page.locator(f'[data-app="{name}"]').first, where)
 
 
 def test_presentation_mode_enlarges_the_controls_text(voila_page):
@@ -403,6 +444,6 @@ def test_presentation_mode_enlarges_the_controls_text(voila_page):
                     label ? parseFloat(getComputedStyle(label).fontSize) : 0];
         })"""
     )
-    assert sorted(name for name, _ in sizes) == sorted(APPS)
+    assert sorted(name for name, _ in sizes) == sorted(UNIQUE)
     small = {name: px for name, px in sizes if px < 18}
     assert not small, f"controls' text below 18 px in presentation mode: {small}"
