@@ -16,7 +16,11 @@ through Playwright, at the default figure size (viewport 1500 x 1100, device pix
 
 For lessons 1-2 the same again with endpoint A dragged by the mouse in the figure (small
 mouse moves with the button held, instead of key presses). And once more for the
-checkerboards at device pixel ratio 2 (a HiDPI screen).
+checkerboards of lesson 6 (its first app) at device pixel ratio 2 (a HiDPI screen).
+
+Every app a lesson makes is measured once (a lesson that makes one twice: the first), by its
+first slider that changes the whole figure; an app with no slider (the mipmap pyramid, a
+drop-down list alone) is listed as not measured.
 
 Times are measured in the page, with ``performance.now()``: the input event's ``timeStamp``
 and the animation frame at which the canvas's pixels first differ (``browser.FRAME_PROBE``:
@@ -84,12 +88,16 @@ STEP_PARAM = {
     "attributes": "w2",
     "colour_quad": "pitch",
     "checkerboards": "pitch",
+    "checkerboards_outside": "pitch",
     "uv_images": "pitch",
+    "outside_view": "pitch",
     "linear_on_screen": "pitch",
     "barycentrics": "pitch",
     "shader": "pitch",
     "clipping": "pitch",
+    "clipping_outside": "pitch",
     "approximations": "pitch",
+    "texture_filtering": "pitch",
 }
 
 #: Apps whose endpoints the mouse drags in the figure (lessons 1-2).
@@ -368,7 +376,7 @@ def bench_lesson(context, base, notebook, names, args, label="", only=None) -> l
     """Run All in a fresh kernel and measure the lesson's apps. A figure left blank by Run All
     (the frontend-not-ready race) cannot be measured: then run the lesson again, up to three
     times, and note how often it happened."""
-    names = [name for name in names if not only or name in only]
+    names = [name for name in names if "@" not in name and (not only or name in only)]
     blank_runs = []
     for attempt in range(3):
         page = new_page(context)
@@ -390,6 +398,8 @@ def bench_lesson(context, base, notebook, names, args, label="", only=None) -> l
             for kind in ["slider", "endpoint"] if drags_a else ["slider"]:
                 t0 = time.monotonic()
                 try:
+                    if name not in STEP_PARAM:
+                        raise LookupError("no slider")
                     if name in blank:
                         raise RuntimeError("blank after Run All in 3 of 3 runs: not measured")
                     bench = bench_slider if kind == "slider" else bench_endpoint
@@ -422,6 +432,8 @@ HEADER = (
 
 
 def format_row(row: dict) -> str:
+    if row.get("error", "").startswith("LookupError"):
+        return f"{row['app']:<28} not measured: it has no slider"
     if "error" in row:
         return f"{row['app']:<28} failed: {row['error']}"
     final = "yes" if row["final_right"] else f"NO ({row['final_mismatch']:.1%} px)"
@@ -481,7 +493,7 @@ def fit(browser, tree: Path = ROOT) -> dict[str, dict[str, dict]]:
             page = new_page(context)
             open_voila_apps(page, f"{base}/voila/render/all_apps.ipynb", names)
             for name in names:
-                found[name][label] = overflow(page.locator(f"[data-app={name}]").first)
+                found[name][label] = overflow(page.locator(f'[data-app="{name}"]').first)
             context.close()
     return found
 
@@ -556,12 +568,13 @@ def main(argv: list[str] | None = None) -> int:
                     continue
                 rows += bench_lesson(context, base, notebook, names, args, only=args.only)
             context.close()
-            if not args.no_dpr2 and (not args.only or "checkerboards" in args.only):
+            hidpi = lessons(args.tree)["06_checkerboards.ipynb"][:1]  # its checkerboards
+            if not args.no_dpr2 and (not args.only or set(hidpi) & set(args.only)):
                 context = browser.new_context(viewport=VIEWPORT, device_scale_factor=2)
                 context.add_init_script(FRAME_PROBE)
                 rows += bench_lesson(
-                    context, base, "06_checkerboards.ipynb", ["checkerboards"], args,
-                    label=" @2x", only=["checkerboards"],
+                    context, base, "06_checkerboards.ipynb", hidpi, args, label=" @2x",
+                    only=hidpi,
                 )  # fmt: skip
                 context.close()
             browser.close()
