@@ -5,8 +5,9 @@
 # as HTML, in teacher/), make student (rewrite lessons/ from source/lessons/), make present (the
 # lessons without code, large, for a projector), make slides (the lessons as live slides), make
 # site (the course website, in build/site/), make course (an nbgrader course with autograded
-# exercises, in course/), make bench (speed figures beside real OpenGL), make handouts
-# (print-ready figures), make install (only the install of make lessons), make clean.
+# exercises, in course/), make bench (speed figures beside real OpenGL), make bench-browser
+# (every app timed in Chromium), make handouts (print-ready figures), make install (only the
+# install of make lessons), make clean.
 
 PYTHON ?= python3
 VENV   ?= .venv
@@ -101,6 +102,12 @@ test: lint $(NBGRADER_DONE) $(NPM_DONE)
 bench: $(VENV)/.installed-gl
 	$(BIN)/python -m interp.bench
 	$(BIN)/python -m interp.bench_outside
+
+# Every app in JupyterLab in Chromium: step latency, fps while dragging, settle time, final frame
+# (tests/bench_browser.py --help; --fit measures whether each app fits the screen instead).
+.PHONY: bench-browser
+bench-browser: $(STAMP)
+	$(BIN)/python tests/bench_browser.py
 
 handouts: $(RUNTIME)
 	$(BIN)/interp-figures --out handouts

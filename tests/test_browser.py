@@ -18,7 +18,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from browser import ARTIFACTS, CHROMIUM, ROOT, SCREENSHOTS, chromium, free_port, server
+from browser import (
+    ARTIFACTS,
+    ROOT,
+    SCREENSHOTS,
+    chromium,
+    free_port,
+    need_chromium,
+    server,
+    sync_api,
+)
 from browser import _wait_for as wait_for_server
 from matplotlib.figure import Figure
 from PIL import Image
@@ -27,7 +36,7 @@ from interp.plots import registry
 
 pytestmark = pytest.mark.browser
 
-playwright_api = pytest.importorskip("playwright.sync_api")
+playwright_api = sync_api()  # skips without Playwright, but not in CI
 
 #: The notebook JupyterLab shows (it keeps the others in the page, hidden).
 VISIBLE = ".jp-NotebookPanel:not(.lm-mod-hidden)"
@@ -35,10 +44,7 @@ VISIBLE = ".jp-NotebookPanel:not(.lm-mod-hidden)"
 
 @pytest.fixture(scope="module")
 def browser():
-    if not os.path.exists(CHROMIUM):
-        if os.environ.get("CI"):
-            pytest.fail(f"CI must have Chromium at {CHROMIUM} (apt-get install chromium)")
-        pytest.skip(f"no Chromium at {CHROMIUM}")
+    need_chromium()
     with playwright_api.sync_playwright() as playwright:
         browser = chromium(playwright)
         yield browser
@@ -268,7 +274,12 @@ def test_classroom_server_culls_closed_pages_and_caps_kernels(tmp_path, browser)
     no more than --max-kernels run at once (Voilà alone keeps one per page ever opened)."""
     lessons = tmp_path / "lessons"
     shutil.copytree(ROOT / "lessons", lessons)
-    env = {**os.environ, "JUPYTER_CONFIG_DIR": str(tmp_path / "config")}
+    path = [str(ROOT), *filter(None, [os.environ.get("PYTHONPATH")])]  # this checkout's interp
+    env = {
+        **os.environ,
+        "JUPYTER_CONFIG_DIR": str(tmp_path / "config"),
+        "PYTHONPATH": os.pathsep.join(path),
+    }
     env.pop("MPLBACKEND", None)
     log = tmp_path / "voila.log"
     for _attempt in range(3):  # a free port can be taken (e.g. by a kernel) before Voilà binds it

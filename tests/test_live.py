@@ -4,6 +4,9 @@ drawn once, with the newest values."""
 from __future__ import annotations
 
 import asyncio
+import threading
+import time
+import warnings
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -86,6 +89,130 @@ def test_without_an_event_loop_each_change_draws_at_once():
     coalescer.request()
     coalescer.request()
     assert shown == [0, 1]
+
+
+def test_two_threads_drawing_one_figure_take_turns(monkeypatch):
+    """ipykernel 7 handles widget messages on a subshell thread beside the main one (JupyterLab
+    4.6 sends comm messages over subshells by default): a slider's redraw, ipympl's own full
+    draw and a cell's ``app.set`` can run at the same moment. Every blitted frame must still be
+    a whole picture of one state, equal to a full redraw at that state."""
+    app = apps.st_mapping()
+    monkeypatch.setattr(apps.App, "live", property(lambda self: True))  # blit, as with ipympl
+    canvas = app.figure.canvas
+    values = [4.0, 5.07, 5.6, 4.5, 6.1, 3.2, 2.0]  # limits and title change along the way
+    truth = {}
+    for value in values:
+        app.set(w2=value)
+        canvas.draw()
+        truth[value] = np.asarray(canvas.buffer_rgba()).copy()
+    frames = []
+    blit = canvas.blit
+
+    def recording_blit(bbox=None):  # the moment ipympl would encode and send a frame
+        frames.append((app.values["w2"], np.asarray(canvas.buffer_rgba()).copy()))
+        blit(bbox)
+
+    canvas.blit = recording_blit
+    stop = threading.Event()
+
+    def full_draws():  # as ipympl's 'draw' and 'refresh' messages do, on another thread
+        while not stop.is_set():
+            canvas.draw()
+            time.sleep(0.001)
+
+    other = threading.Thread(target=full_draws)
+    other.start()
+    try:
+        for value in values:
+            app.set(w2=value)
+    finally:
+        stop.set()
+        other.join()
+    assert len(frames) == len(values)
+    torn = [value for value, frame in frames if not np.array_equal(frame, truth[value])]
+    assert not torn, f"{len(torn)} of {len(frames)} frames were torn (w2 = {torn})"
+
+
+def test_a_frame_before_any_view_is_ready_keeps_the_static_picture():
+    """``app.set(...)`` in the cell that makes the app, under ``%matplotlib widget``, draws
+    before the browser has a view; ipympl then keeps a static picture (its data URL) from the
+    frame's pixels. It used to fail with "ValueError: cannot write empty image"."""
+    import base64
+    import io
+
+    import matplotlib
+    from matplotlib.figure import Figure
+    from PIL import Image
+
+    from interp.apps._live import cheap_frames
+
+    backend = matplotlib.get_backend()
+    try:
+        from ipympl.backend_nbagg import new_figure_manager_given_figure
+    finally:
+        plt.switch_backend(backend)  # importing ipympl's backend makes it pyplot's
+    figure = Figure(figsize=(2, 1))
+    figure.add_subplot().plot([0, 1])
+    with warnings.catch_warnings():  # ipympl's toolbar passes traitlets an argument it warns of
+        warnings.simplefilter("ignore", DeprecationWarning)
+        new_figure_manager_given_figure(1, figure)
+    canvas = figure.canvas
+    assert canvas.syncing_data_url  # no view yet
+    cheap_frames(canvas)
+    canvas.draw()  # sends a frame
+    picture = Image.open(io.BytesIO(base64.b64decode(canvas._data_url))).convert("RGBA")
+    np.testing.assert_array_equal(np.asarray(picture), np.asarray(canvas.buffer_rgba()))
+
+
+def test_a_fast_endpoint_drag_is_drawn_once_with_the_newest_position():
+    """The browser sends a mouse move every 33 ms; each drawn in turn left seconds of stale
+    frames after release (make bench-browser: 12-24 s for lessons 1-2). Moves that arrive
+    while a frame is pending are absorbed, as slider changes are."""
+    from matplotlib.backend_bases import MouseEvent
+
+    app = apps.projecting_a_line()
+    app.figure.canvas.draw()
+    ax = app.plot.view.ax
+    drawn = []
+    refresh = app.refresh
+
+    def counted_refresh():
+        drawn.append(app.controls["A_w"].value)
+        refresh()
+
+    app.refresh = app.coalescer._draw = counted_refresh
+
+    def mouse(name, w, x):
+        px, py = ax.transData.transform((w, x))
+        app.figure.canvas.callbacks.process(name, MouseEvent(name, app.figure.canvas, px, py, 1))
+
+    async def drag():
+        start = app.plot.view.points["A"]
+        mouse("button_press_event", -start[1], start[0])
+        for k in range(1, 21):  # twenty moves that queued up while a frame was drawn
+            mouse("motion_notify_event", 2.0 + 0.2 * k, start[0])
+        mouse("button_release_event", 6.0, start[0])
+        await asyncio.sleep(0.05)
+
+    asyncio.run(drag())
+    assert drawn == [pytest.approx(6.0, abs=0.05)]
+    assert app.plot.view.points["A"][1] == pytest.approx(-app.controls["A_w"].value)
+
+
+def test_a_step_asks_for_no_full_redraw(monkeypatch):
+    """Under ``%matplotlib widget`` pyplot is interactive, and its auto-draw turned every
+    changed artist into ``draw_idle`` (219 for one step of lesson 3's app): ipympl forwards
+    each to the browser, which asks back for a full redraw after the blitted frame."""
+    app = apps.st_mapping()
+    requests = []
+    monkeypatch.setattr(app.figure.canvas, "draw_idle", lambda *a, **k: requests.append(1))
+    interactive = plt.isinteractive()
+    plt.ion()
+    try:
+        app.set(w2=5.0)
+    finally:
+        plt.interactive(interactive)
+    assert requests == []
 
 
 def test_an_orbit_of_3d_axes_redraws_everything_once():

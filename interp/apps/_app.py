@@ -25,7 +25,7 @@ import numpy as np
 from IPython.display import HTML, Javascript, display
 
 from interp._allocator import keep_freed_memory
-from interp.apps._live import Blitter, Coalescer, cheap_frames
+from interp.apps._live import DRAW_LOCK, Blitter, Coalescer, cheap_frames, take_turns
 from interp.plots import styled
 from interp.plots.params import Param
 from interp.plots.registry import LessonFigure
@@ -128,14 +128,20 @@ class App:
         scale = PRESENTATION_TEXT if presenting else 1.0
         self.controls = {name: control(param) for name, param in figure_class.PARAMS.items()}
         self._style = {"font.size": 9 * scale}
-        with styled(**self._style), plt.ioff():
+        with DRAW_LOCK, styled(**self._style), plt.ioff():  # see interp.apps._live.DRAW_LOCK
             self.figure = plt.figure(figsize=(width, height))
             self.plot = figure_class(self.figure, **self.values)
-        # Lay the figure out once, then freeze it: constrained layout would otherwise redo its
-        # work (about half of a redraw) on every slider step, for a figure whose shape never
-        # changes.
-        self.figure.get_layout_engine().execute(self.figure)
-        self.figure.set_layout_engine("none")
+            # Lay the figure out once, then freeze it: constrained layout would otherwise redo
+            # its work (about half of a redraw) on every slider step, for a figure whose shape
+            # never changes.
+            self.figure.get_layout_engine().execute(self.figure)
+            self.figure.set_layout_engine("none")
+        take_turns(self.figure.canvas)
+        # The app redraws its figure itself on every change. pyplot's auto-draw (on under
+        # %matplotlib widget) turned each changed artist into a draw_idle, which ipympl sends
+        # to the browser, which asks back for a full redraw: one more whole frame after every
+        # blitted one.
+        self.figure.stale_callback = None
         for widget in self.controls.values():
             if presenting:  # three controls to a row on a 1280 px projector
                 widget.layout.width = "380px"
@@ -172,21 +178,23 @@ class App:
 
     def refresh(self) -> None:
         """Draw with the controls' values and show the result."""
-        with styled(**self._style):  # titles set now must look like those set at the start
-            self.plot.update(**self.values)
-        if self.live:
-            self.blitter.draw()  # at once: no round trip through the browser first
-        elif self._handle is not None:
-            self._handle.update(self.figure, metadata=self._image_metadata())
-        self.readout.value = self._readout_html()
-        if self._readout_handle is not None:
-            self._readout_handle.update(HTML(self.readout.value))
+        with DRAW_LOCK:  # a slider's thread, ipympl's and a cell's take turns
+            with styled(**self._style):  # titles set now must look like those set at the start
+                self.plot.update(**self.values)
+            if self.live:
+                self.blitter.draw()  # at once: no round trip through the browser first
+            elif self._handle is not None:
+                self._handle.update(self.figure, metadata=self._image_metadata())
+            self.readout.value = self._readout_html()
+            if self._readout_handle is not None:
+                self._readout_handle.update(HTML(self.readout.value))
 
     def _canvas_message(self, canvas: object, content: dict, buffers: list) -> None:
         """After ipympl's own handler: send a fresh full frame to a view that just appeared."""
         if content.get("type") == "initialized":
-            self.figure.canvas._force_full = True
-            self.blitter.draw()
+            with DRAW_LOCK:
+                self.figure.canvas._force_full = True
+                self.blitter.draw()
 
     @property
     def live(self) -> bool:

@@ -33,12 +33,12 @@ class DragEndpoints(App):
             return
         name = self._dragging
         w_control, x_control = self.controls[f"{name}_w"], self.controls[f"{name}_x"]
-        self.set(
-            **{
-                f"{name}_w": min(max(float(event.xdata), w_control.min), w_control.max),
-                f"{name}_x": min(max(float(event.ydata), x_control.min), x_control.max),
-            }
-        )
+        with self._holding():
+            w_control.value = min(max(float(event.xdata), w_control.min), w_control.max)
+            x_control.value = min(max(float(event.ydata), x_control.min), x_control.max)
+        # Latest position wins, as for a slider: the browser sends a move every 33 ms, and
+        # drawing each in turn left seconds of stale frames after the mouse was let go.
+        self.coalescer.request()
 
     def _release(self, event: MouseEvent) -> None:
         self._move(event)  # the browser may drop the last moves: end where the mouse let go

@@ -13,12 +13,19 @@ behind it. Three things make that so (measured in the browser by ``make bench-br
 - **Cheap, whole frames.** Each frame is the whole figure as a PNG at the fastest zlib level
   (see :func:`_frame_image`): about the cost of ipympl's default diff frames, and a frame the
   browser drops can never leave a figure half drawn.
+
+And one thing makes them right: **drawing takes turns** (:data:`DRAW_LOCK`). ipykernel 7 handles
+widget messages on a subshell thread beside the main one (JupyterLab 4.6 sends comm messages
+over subshells by default), so a slider's redraw, ipympl's own full draw and a cell's
+``app.set`` can run at the same moment; two draws into one Agg buffer tore each other's frames,
+and a torn background stayed on screen until the next full draw.
 """
 
 from __future__ import annotations
 
 import asyncio
 import io
+import threading
 from collections.abc import Callable
 from types import MethodType
 
@@ -33,6 +40,9 @@ from PIL import Image
 PNG_LEVEL = 1
 #: How long a pending redraw waits for more slider messages to arrive, in seconds.
 SETTLE = 0.004
+#: Held while an app changes or draws its figure, on whichever thread: matplotlib is not
+#: thread-safe, and the style sheet is applied through the global rcParams.
+DRAW_LOCK = threading.RLock()
 
 
 def static_key(figure: Figure) -> tuple:
@@ -220,12 +230,37 @@ def _frame_image(canvas: object) -> bytes | None:
     if not canvas._png_is_old:
         return None
     pixels = np.asarray(canvas.get_renderer().buffer_rgba())
+    if getattr(canvas, "syncing_data_url", False):
+        # No view has said it is ready (a cell still running, or no browser at all): ipympl
+        # then keeps a static picture of the figure from the last frame's pixels, which
+        # matplotlib's own diff frames would have left in ``_last_buff``.
+        canvas._last_buff = pixels.copy().view(np.uint32)[..., 0]
     canvas.set_image_mode("full")
     canvas._force_full = False
     canvas._png_is_old = False
     with io.BytesIO() as png:
         Image.fromarray(pixels).save(png, format="png", compress_level=PNG_LEVEL)
         return png.getvalue()
+
+
+def take_turns(canvas: object) -> None:
+    """Make ``canvas.draw`` hold :data:`DRAW_LOCK` (ipympl calls it from whichever thread its
+    'draw' or 'refresh' message arrives on).
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> figure = plt.figure()
+    >>> take_turns(figure.canvas)
+    >>> figure.canvas.draw()
+    """
+    draw = canvas.draw
+
+    def draw_in_turn(*args: object, **kwargs: object) -> object:
+        with DRAW_LOCK:
+            return draw(*args, **kwargs)
+
+    canvas.draw = draw_in_turn
 
 
 def cheap_frames(canvas: object) -> None:

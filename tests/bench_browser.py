@@ -1,0 +1,598 @@
+"""How live every app feels in a real browser: ``make bench-browser`` (or
+``python tests/bench_browser.py``).
+
+Every app of every lesson, in a real JupyterLab on a free localhost port, in Debian's Chromium
+through Playwright, at the default figure size (viewport 1500 x 1100, device pixel ratio 1):
+
+- step: a keyboard arrow on the focused slider, to the first changed picture on the figure's
+  canvas; median and p90 over ``--steps`` steps, each once the previous one has settled;
+- drag: the slider's handle dragged back and forth with the mouse for ``--seconds`` s (a move
+  every 16 ms), counting distinct pictures shown per second while the button is down;
+- settle: from mouse-up to the last change of the canvas (waiting until nothing changed for
+  0.8 s with the kernel idle), and how many pictures were shown after mouse-up;
+- final: whether the picture left on screen is the figure at the final value: the canvas's
+  pixels against the same app drawn afresh in the kernel at its controls' values
+  (``browser.TRUTH``), and the slider's readout against the kernel's value.
+
+For lessons 1-2 the same again with endpoint A dragged by the mouse in the figure (small
+mouse moves with the button held, instead of key presses). And once more for the
+checkerboards of lesson 6 (its first app) at device pixel ratio 2 (a HiDPI screen).
+
+Every app a lesson makes is measured once (a lesson that makes one twice: the first), by its
+first slider that changes the whole figure; an app with no slider (the mipmap pyramid, a
+drop-down list alone) is listed as not measured.
+
+Times are measured in the page, with ``performance.now()``: the input event's ``timeStamp``
+and the animation frame at which the canvas's pixels first differ (``browser.FRAME_PROBE``:
+``drawImage`` into a figure canvas marks it, a requestAnimationFrame loop hashes marked
+canvases once per frame). So "frames" are distinct pictures about to be painted, at most one
+per display frame; Playwright's round trips are not in the figures.
+
+The machine is shared and noisy: the output starts with the CPU count and load average, before
+and after, so runs can be compared.
+
+``--tree DIR`` measures another checkout instead of this one: its lessons, and its ``interp`` in
+the kernels (first on their PYTHONPATH) and here (for the apps' parameters). So the same script
+measures the apps before and after a change, e.g. in a worktree at an older commit
+(``git worktree add ../before COMMIT``); the header says which ``interp`` the kernels imported
+and at which commit. Apps a checkout lacks are not measured; what an older app cannot do (no
+blitting, no readout) is simply not used.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from browser import (
+    CHROMIUM,
+    FRAME_PROBE,
+    ROOT,
+    app_root,
+    canvas_pixels,
+    chromium,
+    endpoint_a,
+    figure_canvas,
+    is_blank,
+    kernel_interp,
+    kernel_truth,
+    lessons,
+    mismatch,
+    open_lesson,
+    open_voila_apps,
+    overflow,
+    server,
+    show_file_browser,
+    shutdown_kernels,
+    slider_for,
+    wait_idle,
+    write_all_apps_notebook,
+)
+
+#: The slider each app is stepped and dragged with (the first that changes its whole figure).
+STEP_PARAM = {
+    "the_problem": "A_w",
+    "projecting_a_line": "A_w",
+    "st_mapping": "w2",
+    "depth": "w2",
+    "attributes": "w2",
+    "colour_quad": "pitch",
+    "checkerboards": "pitch",
+    "checkerboards_outside": "pitch",
+    "uv_images": "pitch",
+    "outside_view": "pitch",
+    "linear_on_screen": "pitch",
+    "barycentrics": "pitch",
+    "shader": "pitch",
+    "clipping": "pitch",
+    "clipping_outside": "pitch",
+    "approximations": "pitch",
+    "texture_filtering": "pitch",
+}
+
+#: Apps whose endpoints the mouse drags in the figure (lessons 1-2).
+DRAGGABLE = ("the_problem", "projecting_a_line")
+
+#: A picture counts as the right one when at most this fraction of its pixels differ.
+TOLERANCE = 0.001
+
+VIEWPORT = {"width": 1500, "height": 1100}
+
+#: Where the first lesson's kernel imported ``interp`` from (filled in by :func:`bench_lesson`).
+KERNEL_INTERP: list[str] = []
+
+
+def machine_line() -> str:
+    load = " ".join(f"{x:.2f}" for x in os.getloadavg())
+    return f"{os.cpu_count()} CPUs, load average {load} (1, 5, 15 min)"
+
+
+def chromium_version() -> str:
+    try:
+        out = subprocess.run([CHROMIUM, "--version"], capture_output=True, text=True, timeout=20)
+        return out.stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+
+
+def percentile(values: list[float], q: float) -> float:
+    """The q-th percentile (nearest rank, so p90 of 15 steps is the 14th)."""
+    ordered = sorted(values)
+    rank = max(1, round(q / 100 * len(ordered) + 0.4999))
+    return ordered[min(rank, len(ordered)) - 1]
+
+
+def figure_param(name: str, param: str):
+    from interp.plots import registry
+
+    return registry.FIGURES[name.replace("_", "-")].PARAMS[param]
+
+
+def tree_line(tree: Path) -> str:
+    """The checkout measured: its path and commit."""
+    try:
+        out = subprocess.run(
+            ["git", "-C", str(tree), "log", "-1", "--format=%h %s"],
+            capture_output=True,
+            text=True,
+            timeout=20,
+        )
+        commit = out.stdout.strip()[:100] or "not a git checkout"
+        dirty = subprocess.run(
+            ["git", "-C", str(tree), "status", "--porcelain", "--", "interp", "lessons"],
+            capture_output=True,
+            text=True,
+            timeout=20,
+        ).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        commit, dirty = "unknown", ""
+    return f"{tree} at {commit}" + (" (interp/ or lessons/ changed since)" if dirty else "")
+
+
+# ------------------------------------------------------------------------ in-page readings
+
+
+def last_frame_time(page, canvas) -> float:
+    return page.evaluate("c => (window.__probe.last(c) || {t: 0}).t", canvas)
+
+
+def frames_between(page, canvas, start: float, end: float) -> list[float]:
+    return page.evaluate(
+        "([c, a, b]) => window.__probe.of(c).filter(f => f.t > a && f.t <= b).map(f => f.t)",
+        [canvas, start, end],
+    )
+
+
+def last_input(page, kind: str) -> float:
+    return page.evaluate("k => window.__probe.lastInput(k)", kind)
+
+
+def first_frame_after(page, canvas, t: float, timeout: float = 10.0) -> float | None:
+    """Wait for a picture after page time ``t``; its time, or None if none came."""
+    try:
+        page.wait_for_function(
+            "([c, t]) => { const f = window.__probe.last(c); return !!f && f.t > t; }",
+            arg=[canvas, t],
+            timeout=timeout * 1000,
+            polling="raf",
+        )
+    except Exception:  # playwright's TimeoutError
+        return None
+    return page.evaluate("([c, t]) => window.__probe.of(c).find(f => f.t > t).t", [canvas, t])
+
+
+# ------------------------------------------------------------------------------ the actions
+
+
+def step_with_keys(page, handle, canvas, key: str, steps: int) -> tuple[list[float], int]:
+    """Press ``key`` on the focused slider handle ``steps`` times, each after the last has
+    settled; the latencies (ms) and how many steps changed nothing within 10 s."""
+    handle.focus()
+    latencies, misses = [], 0
+    for _ in range(steps):
+        page.keyboard.press(key)
+        t_in = last_input(page, "keydown")
+        shown = first_frame_after(page, canvas, t_in)
+        if shown is None:
+            misses += 1
+        else:
+            latencies.append(shown - t_in)
+        wait_idle(page, quiet_ms=100)
+    return latencies, misses
+
+
+def step_with_mouse(page, start: tuple[float, float], dx: float, canvas, steps: int):
+    """Press at ``start``, then move ``dx`` px ``steps`` times, each after the last settled;
+    release. The latencies (ms) and the steps that changed nothing."""
+    x, y = start
+    page.mouse.move(x, y)
+    page.mouse.down()
+    wait_idle(page, quiet_ms=150)
+    latencies, misses = [], 0
+    for i in range(1, steps + 1):
+        page.mouse.move(x + dx * i, y)
+        t_in = last_input(page, "pointermove")
+        shown = first_frame_after(page, canvas, t_in)
+        if shown is None:
+            misses += 1
+        else:
+            latencies.append(shown - t_in)
+        wait_idle(page, quiet_ms=100)
+    page.mouse.up()
+    wait_idle(page, quiet_ms=300)
+    return latencies, misses
+
+
+def drag(page, start: tuple[float, float], amplitude: float, seconds: float) -> None:
+    """Hold the button at ``start`` and move back and forth by ``amplitude`` px, a move every
+    16 ms, for ``seconds``; let go a quarter period past a whole number of periods (at
+    ``start`` + ``amplitude``), so the final value differs from the first."""
+    x, y = start
+    period = seconds / (int(seconds / 1.2) + 0.25)
+    page.mouse.move(x, y)
+    page.mouse.down()
+    t0 = time.perf_counter()
+    while True:
+        t = time.perf_counter() - t0
+        if t >= seconds:
+            break
+        phase = (t / period) % 1.0
+        tri = 4 * phase if phase < 0.25 else 2 - 4 * phase if phase < 0.75 else 4 * phase - 4
+        page.mouse.move(x + amplitude * tri, y)
+        wait = 0.016 - (time.perf_counter() - t0 - t)
+        if wait > 0:
+            time.sleep(wait)
+    page.mouse.move(x + amplitude, y)
+    page.mouse.up()
+
+
+def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> dict:
+    """Drag, then: fps while the button was down, settle time, pictures after mouse-up, and
+    whether the final picture is the figure at the final value (if not, and ``--save``, both
+    pictures go to that folder as TAG-shown.png and TAG-truth.png)."""
+    drag(page, start, amplitude, args.seconds)
+    t_down, t_up = last_input(page, "pointerdown"), last_input(page, "pointerup")
+    wait_idle(page, quiet_ms=800, timeout=60)
+    during = frames_between(page, canvas, t_down, t_up)
+    after = frames_between(page, canvas, t_up, float("inf"))
+    settle = (after[-1] - t_up) if after else 0.0
+    values, truth = kernel_truth(page, count)
+    shown = canvas_pixels(canvas)
+    wrong = mismatch(shown, truth)
+    if wrong > TOLERANCE and args.save:
+        save_pictures(args.save, tag, shown, truth)
+    value_agrees = True
+    if readout is not None:
+        value_agrees = readout_agrees(readout, values)
+    return {
+        "fps": len(during) / ((t_up - t_down) / 1000),
+        "frames_during": len(during),
+        "settle_ms": settle,
+        "frames_after_release": len(after),
+        "final_mismatch": wrong,
+        "final_right": wrong <= TOLERANCE and value_agrees and not is_blank(shown),
+        "readout_agrees": value_agrees,
+    }
+
+
+def save_pictures(folder: Path, tag: str, shown, truth) -> None:
+    from PIL import Image
+
+    folder.mkdir(parents=True, exist_ok=True)
+    Image.fromarray(shown).save(folder / f"{tag}-shown.png")
+    Image.fromarray(truth).save(folder / f"{tag}-truth.png")
+
+
+def readout_agrees(readout: tuple, values: dict[str, str]) -> bool:
+    """The slider's readout shows the kernel's value (to half a step)."""
+    locator, param, name = readout
+    text = locator.inner_text().strip()
+    try:
+        return abs(float(text) - float(values[name])) <= param.step / 2 + 1e-9
+    except ValueError:
+        return False
+
+
+# ---------------------------------------------------------------------------------- per app
+
+
+def bench_slider(page, name: str, count: int, args, label: str) -> dict:
+    root = app_root(page, name)
+    param_name = STEP_PARAM[name]
+    param = figure_param(name, param_name)
+    slider = slider_for(root, param.label)
+    slider.scroll_into_view_if_needed()
+    canvas_locator = figure_canvas(root)
+    canvas = canvas_locator.element_handle()
+    handle = slider.locator(".noUi-handle")
+    up = param.default + args.steps * param.step <= param.high
+    key = "ArrowRight" if up else "ArrowLeft"
+    latencies, misses = step_with_keys(page, handle, canvas, key, args.steps)
+    box = handle.bounding_box()
+    track = slider.locator(".noUi-target").bounding_box()
+    centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    room = min(centre[0] - track["x"], track["x"] + track["width"] - centre[0])
+    amplitude = max(8.0, min(40.0, room - 4))
+    if centre[0] + amplitude > track["x"] + track["width"]:
+        amplitude = -amplitude
+    readout = (slider.locator(".widget-readout"), param, param_name)
+    row = measure_drag(page, canvas, centre, amplitude, args, count, readout, name + label)
+    row.update(input=f"{label} slider '{param.label}'", **summary(latencies, misses))
+    return row
+
+
+def bench_endpoint(page, name: str, count: int, args, label: str) -> dict:
+    root = app_root(page, name)
+    canvas_locator = figure_canvas(root)
+    canvas_locator.scroll_into_view_if_needed()
+    canvas = canvas_locator.element_handle()
+    box = canvas_locator.bounding_box()
+    ax, ay, axes = endpoint_a(page, count)
+    start = (box["x"] + ax, box["y"] + ay)
+    latencies, misses = step_with_mouse(page, start, 3.0, canvas, args.steps)
+    # The steps moved A by 3 px each: drag from where it is now.
+    ax, ay, axes = endpoint_a(page, count)
+    start = (box["x"] + ax, box["y"] + ay)
+    room = min(ax - axes[0], axes[0] + axes[2] - ax) - 6
+    amplitude = max(8.0, min(40.0, room))
+    if ax + amplitude > axes[0] + axes[2]:
+        amplitude = -amplitude
+    row = measure_drag(page, canvas, start, amplitude, args, count, None, name + "-A" + label)
+    row.update(input="mouse on endpoint A", **summary(latencies, misses))
+    return row
+
+
+def summary(latencies: list[float], misses: int) -> dict:
+    if not latencies:
+        return {"median_ms": float("nan"), "p90_ms": float("nan"), "steps": 0, "misses": misses}
+    return {
+        "median_ms": statistics.median(latencies),
+        "p90_ms": percentile(latencies, 90),
+        "steps": len(latencies),
+        "misses": misses,
+        "latencies_ms": [round(x, 1) for x in latencies],
+    }
+
+
+def new_page(context):
+    page = context.new_page()
+    page.errors = []
+    page.on("console", lambda m: m.type == "error" and page.errors.append(m.text))
+    page.on("pageerror", lambda e: page.errors.append(str(e)))
+    return page
+
+
+def bench_lesson(context, base, notebook, names, args, label="", only=None) -> list[dict]:
+    """Run All in a fresh kernel and measure the lesson's apps. A figure left blank by Run All
+    (the frontend-not-ready race) cannot be measured: then run the lesson again, up to three
+    times, and note how often it happened."""
+    names = [name for name in names if "@" not in name and (not only or name in only)]
+    blank_runs = []
+    for attempt in range(3):
+        page = new_page(context)
+        counts = open_lesson(page, base, notebook, drawn_within=10)
+        if not KERNEL_INTERP:
+            KERNEL_INTERP.append(str(kernel_interp(page)))
+        blank = [n for n in names if is_blank(canvas_pixels(figure_canvas(app_root(page, n))))]
+        if blank:
+            blank_runs.append(blank)
+            print(f"  ({notebook}, run {attempt + 1}: blank after Run All: {', '.join(blank)})")
+        if not blank or attempt == 2:
+            break
+        shutdown_kernels(page)
+        page.close()
+    rows = []
+    try:
+        for name in names:
+            drags_a = name in DRAGGABLE and not args.no_endpoints
+            for kind in ["slider", "endpoint"] if drags_a else ["slider"]:
+                t0 = time.monotonic()
+                try:
+                    if name not in STEP_PARAM:
+                        raise LookupError("no slider")
+                    if name in blank:
+                        raise RuntimeError("blank after Run All in 3 of 3 runs: not measured")
+                    bench = bench_slider if kind == "slider" else bench_endpoint
+                    row = bench(page, name, counts[name], args, label)
+                except Exception as error:  # one app's failure must not lose the others' rows
+                    row = {"error": f"{type(error).__name__}: {str(error).splitlines()[0]}"}
+                row.update(
+                    app=name + ("" if kind == "slider" else " (drag A)") + label,
+                    lesson=notebook,
+                    blank_runs=sum(name in b for b in blank_runs),
+                    runs=attempt + 1,
+                    seconds=round(time.monotonic() - t0, 1),
+                )
+                rows.append(row)
+                print(format_row(row), flush=True)
+        for row in rows:
+            row["console_errors"] = list(page.errors)
+    finally:
+        shutdown_kernels(page)
+        page.close()
+    return rows
+
+
+# ---------------------------------------------------------------------------------- output
+
+HEADER = (
+    f"{'app':<28} {'median':>7} {'p90':>7} {'fps':>6} {'settle':>7} {'after':>5} "
+    f"{'final right?':<14} notes"
+)
+
+
+def format_row(row: dict) -> str:
+    if row.get("error", "").startswith("LookupError"):
+        return f"{row['app']:<28} not measured: it has no slider"
+    if "error" in row:
+        return f"{row['app']:<28} failed: {row['error']}"
+    final = "yes" if row["final_right"] else f"NO ({row['final_mismatch']:.1%} px)"
+    if not row["readout_agrees"]:
+        final = "NO (readout)"
+    notes = []
+    if row.get("blank_runs"):
+        notes.append(f"blank after Run All in {row['blank_runs']} of {row['runs']} runs")
+    if row.get("misses"):
+        notes.append(f"{row['misses']} steps drew nothing")
+    return (
+        f"{row['app']:<28} {row['median_ms']:>5.0f}ms {row['p90_ms']:>5.0f}ms "
+        f"{row['fps']:>6.1f} {row['settle_ms']:>5.0f}ms {row['frames_after_release']:>5} "
+        f"{final:<14} {'; '.join(notes)}"
+    )
+
+
+# ------------------------------------------------------------------------ fits the screen
+
+#: Where each app is measured: (label, viewport, JupyterLab with the file browser or Voilà).
+SCREENS = (
+    ("Lab 1280x800", {"width": 1280, "height": 800}),
+    ("Lab 1920x1080", {"width": 1920, "height": 1080}),
+    ("Voila pres. 1280x720", {"width": 1280, "height": 720}),
+)
+
+
+def fit(browser, tree: Path = ROOT) -> dict[str, dict[str, dict]]:
+    """For each app and screen: how many CSS px it reaches past the visible right edge
+    (``browser.overflow``), and its height."""
+    names = [name for names in lessons(tree).values() for name in names]
+    found = {name: {} for name in names}
+    with tempfile.TemporaryDirectory() as tmp, server("lab", Path(tmp), tree=tree) as base:
+        context = browser.new_context(viewport=SCREENS[0][1])
+        context.add_init_script(FRAME_PROBE)
+        for notebook, apps in lessons(tree).items():
+            page = new_page(context)
+            open_lesson(page, base, notebook, file_browser=True)
+            for label, viewport in SCREENS[:2]:
+                page.set_viewport_size(viewport)
+                show_file_browser(page)
+                for name in apps:
+                    found[name][label] = overflow(app_root(page, name))
+            shutdown_kernels(page)
+            page.close()
+        context.close()
+    with tempfile.TemporaryDirectory() as tmp:
+        env = {"INTERP_PRESENTATION": "1"}
+        with server("voila", Path(tmp), env=env, tree=tree) as base:
+            write_all_apps_notebook(Path(tmp) / "lessons" / "all_apps.ipynb", names)
+            label, viewport = SCREENS[2]
+            context = browser.new_context(viewport=viewport)
+            context.route(
+                "https://cdn.jsdelivr.net/npm/@fortawesome/**",
+                lambda route: route.fulfill(status=200, content_type="text/css", body=""),
+            )
+            page = new_page(context)
+            open_voila_apps(page, f"{base}/voila/render/all_apps.ipynb", names)
+            for name in names:
+                found[name][label] = overflow(page.locator(f'[data-app="{name}"]').first)
+            context.close()
+    return found
+
+
+def print_fit(found: dict[str, dict[str, dict]]) -> None:
+    print("px past the visible right edge (> 0: cut off or scrolled sideways); figure width")
+    print(f"{'app':<20}" + "".join(f"{label:>24}" for label, _ in SCREENS) + "   app height")
+    for name, screens in found.items():
+        cells = []
+        for label, _ in SCREENS:
+            m = screens[label]
+            cells.append(f"{m['overflow']:>+6} (fig {m['width']:>4} px)".rjust(24))
+        heights = "/".join(str(screens[label]["height"]) for label, _ in SCREENS)
+        print(f"{name:<20}" + "".join(cells) + f"   {heights}")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--steps", type=int, default=15, help="slider steps per app (15)")
+    parser.add_argument("--seconds", type=float, default=3.0, help="length of each drag (3 s)")
+    parser.add_argument("--only", nargs="*", help="only these apps (names as in apps.ALL)")
+    parser.add_argument("--json", type=Path, help="also write the rows to this JSON file")
+    parser.add_argument("--save", type=Path, help="save wrong final pictures in this folder")
+    parser.add_argument(
+        "--fit", action="store_true", help="measure instead whether each app fits the screen"
+    )
+    parser.add_argument("--no-dpr2", action="store_true", help="skip the HiDPI run")
+    parser.add_argument("--no-endpoints", action="store_true", help="skip dragging A")
+    parser.add_argument(
+        "--tree",
+        type=Path,
+        default=ROOT,
+        help="the checkout to measure: its lessons and its interp (default: this one)",
+    )
+    args = parser.parse_args(argv)
+    args.tree = args.tree.resolve()
+    sys.path.insert(0, str(args.tree))  # the apps' parameters come from the checkout measured
+    if not os.path.exists(CHROMIUM):
+        print(f"no Chromium at {CHROMIUM} (apt-get install chromium)", file=sys.stderr)
+        return 2
+    from playwright.sync_api import sync_playwright
+
+    if args.fit:
+        with sync_playwright() as playwright:
+            browser = chromium(playwright)
+            found = fit(browser, args.tree)
+            browser.close()
+        print_fit(found)
+        if args.json:
+            args.json.write_text(json.dumps(found, indent=1))
+        return 0
+    started = time.monotonic()
+    before = machine_line()
+    print(f"interp browser benchmark, {time.strftime('%Y-%m-%d %H:%M')}, {platform.node()}")
+    print(f"{chromium_version()}; viewport {VIEWPORT['width']}x{VIEWPORT['height']}")
+    print(f"machine before: {before}")
+    print(f"measuring {tree_line(args.tree)}")
+    print(
+        "step: key press -> first changed canvas picture (median, p90 of "
+        f"{args.steps}); fps: distinct pictures/s during a {args.seconds:g} s mouse drag; "
+        "settle: mouse-up -> last change; after: pictures shown after mouse-up"
+    )
+    print(HEADER)
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp, server("lab", Path(tmp), tree=args.tree) as base:
+        with sync_playwright() as playwright:
+            browser = chromium(playwright)
+            context = browser.new_context(viewport=VIEWPORT)
+            context.add_init_script(FRAME_PROBE)
+            for notebook, names in lessons(args.tree).items():
+                if args.only and not set(names) & set(args.only):
+                    continue
+                rows += bench_lesson(context, base, notebook, names, args, only=args.only)
+            context.close()
+            hidpi = lessons(args.tree)["06_checkerboards.ipynb"][:1]  # its checkerboards
+            if not args.no_dpr2 and (not args.only or set(hidpi) & set(args.only)):
+                context = browser.new_context(viewport=VIEWPORT, device_scale_factor=2)
+                context.add_init_script(FRAME_PROBE)
+                rows += bench_lesson(
+                    context, base, "06_checkerboards.ipynb", hidpi, args, label=" @2x",
+                    only=hidpi,
+                )  # fmt: skip
+                context.close()
+            browser.close()
+    after = machine_line()
+    errors = sorted({e for row in rows for e in row.get("console_errors", [])})
+    print()
+    print("machine after:  " + after)
+    print(f"kernels imported interp from {KERNEL_INTERP[0] if KERNEL_INTERP else '?'}")
+    print(f"console errors: {len(errors)}" + "".join(f"\n  {e[:200]}" for e in errors))
+    print(f"total {time.monotonic() - started:.0f} s")
+    if args.json:
+        args.json.parent.mkdir(parents=True, exist_ok=True)
+        args.json.write_text(
+            json.dumps({"machine_before": before, "machine_after": after, "rows": rows}, indent=1)
+        )
+        print(f"wrote {args.json}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
