@@ -142,13 +142,13 @@ def server(
             _wait_for_log(f"127.0.0.1:{port}/", process, log)  # ours answered, not another
             break
         except RuntimeError:
-            _stop(process)
+            stop(process)
     else:
         raise RuntimeError(f"no {kind} server started in 5 attempts:\n{log.read_text()[-3000:]}")
     try:
         yield f"http://127.0.0.1:{port}"
     finally:
-        _stop(process)
+        stop(process)
 
 
 def _wait_for_log(text: str, process: subprocess.Popen, log: Path, seconds: float = 30) -> None:
@@ -163,7 +163,8 @@ def _wait_for_log(text: str, process: subprocess.Popen, log: Path, seconds: floa
     raise RuntimeError(f"the server never said it runs at {text}:\n{log.read_text()[-3000:]}")
 
 
-def _stop(process: subprocess.Popen) -> None:
+def stop(process: subprocess.Popen) -> None:
+    """End a server: terminate, and kill it if it has not ended within 15 s."""
     process.terminate()
     try:
         process.wait(timeout=15)

@@ -35,7 +35,6 @@ from browser import (
     app_root,
     base_app,
     canvas_pixels,
-    chromium,
     endpoint_a,
     figure_canvas,
     figure_of,
@@ -44,7 +43,6 @@ from browser import (
     kernel_truth,
     lessons,
     mismatch,
-    need_chromium,
     open_lesson,
     open_voila_apps,
     overflow,
@@ -61,7 +59,7 @@ from interp import apps
 
 pytestmark = pytest.mark.browser
 
-playwright_api = sync_api()  # skips without Playwright, but not in CI
+sync_api()  # skips the module without Playwright, but not in CI
 
 #: Every lesson and the apps it makes, in order; an app a lesson makes twice is NAME@2.
 LESSONS = lessons()
@@ -122,15 +120,6 @@ def test_every_app_is_tested():
 
 
 # ---------------------------------------------------------------------------------- fixtures
-
-
-@pytest.fixture(scope="module")
-def browser():
-    need_chromium()
-    with playwright_api.sync_playwright() as playwright:
-        browser = chromium(playwright)
-        yield browser
-        browser.close()
 
 
 @pytest.fixture(scope="module")
