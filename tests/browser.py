@@ -666,3 +666,27 @@ def show_file_browser(page) -> None:
         "window.jupyterapp.shell.activateById('filebrowser'); }"
     )
     page.wait_for_timeout(300)  # the panels lay themselves out again
+
+
+#: The control moved in each app: one that changes the whole figure (a slider, else a
+#: drop-down list).
+CONTROL = {
+    "the_problem": "A_w",
+    "projecting_a_line": "A_w",
+    "st_mapping": "w2",
+    "depth": "w2",
+    "attributes": "w2",
+    "colour_quad": "pitch",
+    "checkerboards": "pitch",
+    "checkerboards_outside": "pitch",
+    "uv_images": "pitch",
+    "outside_view": "pitch",
+    "linear_on_screen": "pitch",
+    "barycentrics": "pitch",
+    "shader": "pitch",
+    "clipping": "pitch",
+    "clipping_outside": "pitch",
+    "approximations": "pitch",
+    "texture_filtering": "pitch",
+    "mipmap_pyramid": "frequency",
+}

@@ -29,6 +29,7 @@ import time
 import pytest
 from browser import (
     ARTIFACTS,
+    CONTROL,
     FRAME_PROBE,
     ROOT,
     VISIBLE,
@@ -79,28 +80,6 @@ UNIQUE = list(dict.fromkeys(base_app(name) for name in APPS))
 #: At most this fraction of a figure's pixels may differ from the app drawn in the kernel.
 TOLERANCE = 0.001
 
-#: The control moved in each app: one that changes the whole figure (a slider, else a
-#: drop-down list).
-CONTROL = {
-    "the_problem": "A_w",
-    "projecting_a_line": "A_w",
-    "st_mapping": "w2",
-    "depth": "w2",
-    "attributes": "w2",
-    "colour_quad": "pitch",
-    "checkerboards": "pitch",
-    "checkerboards_outside": "pitch",
-    "uv_images": "pitch",
-    "outside_view": "pitch",
-    "linear_on_screen": "pitch",
-    "barycentrics": "pitch",
-    "shader": "pitch",
-    "clipping": "pitch",
-    "clipping_outside": "pitch",
-    "approximations": "pitch",
-    "texture_filtering": "pitch",
-    "mipmap_pyramid": "frequency",
-}
 
 #: Lessons whose figures went missing after some Run Alls: run again in fresh kernels.
 FLAKY_LESSONS = ("08_gpus.ipynb",)
