@@ -51,8 +51,9 @@ class UsageError(Exception):
     """A bad name, parameter, option or path: reported with exit status 2."""
 
 
-class TerminatedError(Exception):
-    """SIGTERM or SIGINT arrived: stop, clean up, say so."""
+class TerminatedError(BaseException):
+    """SIGTERM arrived: stop, clean up, say so. Like KeyboardInterrupt (SIGINT's) it is not an
+    Exception, so no ``except Exception`` on the way (in matplotlib, say) can swallow it."""
 
 
 def _load_params_file(file: str) -> dict:

@@ -56,6 +56,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from browser import (
     CHROMIUM,
+    CONTROL,
     FRAME_PROBE,
     ROOT,
     app_root,
@@ -79,26 +80,8 @@ from browser import (
     write_all_apps_notebook,
 )
 
-#: The slider each app is stepped and dragged with (the first that changes its whole figure).
-STEP_PARAM = {
-    "the_problem": "A_w",
-    "projecting_a_line": "A_w",
-    "st_mapping": "w2",
-    "depth": "w2",
-    "attributes": "w2",
-    "colour_quad": "pitch",
-    "checkerboards": "pitch",
-    "checkerboards_outside": "pitch",
-    "uv_images": "pitch",
-    "outside_view": "pitch",
-    "linear_on_screen": "pitch",
-    "barycentrics": "pitch",
-    "shader": "pitch",
-    "clipping": "pitch",
-    "clipping_outside": "pitch",
-    "approximations": "pitch",
-    "texture_filtering": "pitch",
-}
+#: The slider each app is stepped and dragged with (the mipmap pyramid has a drop-down only).
+STEP_PARAM = {app: name for app, name in CONTROL.items() if app != "mipmap_pyramid"}
 
 #: Apps whose endpoints the mouse drags in the figure (lessons 1-2).
 DRAGGABLE = ("the_problem", "projecting_a_line")

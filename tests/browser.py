@@ -142,13 +142,13 @@ def server(
             _wait_for_log(f"127.0.0.1:{port}/", process, log)  # ours answered, not another
             break
         except RuntimeError:
-            _stop(process)
+            stop(process)
     else:
         raise RuntimeError(f"no {kind} server started in 5 attempts:\n{log.read_text()[-3000:]}")
     try:
         yield f"http://127.0.0.1:{port}"
     finally:
-        _stop(process)
+        stop(process)
 
 
 def _wait_for_log(text: str, process: subprocess.Popen, log: Path, seconds: float = 30) -> None:
@@ -163,7 +163,8 @@ def _wait_for_log(text: str, process: subprocess.Popen, log: Path, seconds: floa
     raise RuntimeError(f"the server never said it runs at {text}:\n{log.read_text()[-3000:]}")
 
 
-def _stop(process: subprocess.Popen) -> None:
+def stop(process: subprocess.Popen) -> None:
+    """End a server: terminate, and kill it if it has not ended within 15 s."""
     process.terminate()
     try:
         process.wait(timeout=15)
@@ -665,3 +666,27 @@ def show_file_browser(page) -> None:
         "window.jupyterapp.shell.activateById('filebrowser'); }"
     )
     page.wait_for_timeout(300)  # the panels lay themselves out again
+
+
+#: The control moved in each app: one that changes the whole figure (a slider, else a
+#: drop-down list).
+CONTROL = {
+    "the_problem": "A_w",
+    "projecting_a_line": "A_w",
+    "st_mapping": "w2",
+    "depth": "w2",
+    "attributes": "w2",
+    "colour_quad": "pitch",
+    "checkerboards": "pitch",
+    "checkerboards_outside": "pitch",
+    "uv_images": "pitch",
+    "outside_view": "pitch",
+    "linear_on_screen": "pitch",
+    "barycentrics": "pitch",
+    "shader": "pitch",
+    "clipping": "pitch",
+    "clipping_outside": "pitch",
+    "approximations": "pitch",
+    "texture_filtering": "pitch",
+    "mipmap_pyramid": "frequency",
+}

@@ -33,6 +33,20 @@ def gl():
     return opengl
 
 
+@pytest.fixture(scope="module")
+def browser():
+    """Debian's Chromium, headless, through Playwright (``tests/browser.py``). Skipped where
+    there is none, except under ``CI=true``, where that is a failure."""
+    from browser import chromium, need_chromium, sync_api
+
+    playwright_api = sync_api()
+    need_chromium()
+    with playwright_api.sync_playwright() as playwright:
+        launched = chromium(playwright)
+        yield launched
+        launched.close()
+
+
 @pytest.fixture
 def rng() -> np.random.Generator:
     return np.random.default_rng(20261122)

@@ -95,3 +95,35 @@ def nbgrader(*args: str, cwd: Path, timeout: float = 600) -> subprocess.Complete
     )
     assert result.returncode == 0, result.stderr[-4000:]
     return result
+
+
+#: The lessons' single source (the teacher's), with nbgrader's markers.
+SOURCES = LESSONS.parent / "source" / "lessons"
+
+
+def cells(number: int) -> list[nbformat.NotebookNode]:
+    """The cells of lesson ``number``'s source."""
+    (path,) = SOURCES.glob(f"{number:02d}_*.ipynb")
+    return nbformat.read(path, as_version=4).cells
+
+
+def prose(number: int) -> str:
+    """A lesson's text as students read it (markdown cells that are not teacher answers), its
+    line breaks made spaces."""
+    text = [c.source for c in cells(number) if c.cell_type == "markdown" and not c.metadata]
+    return " ".join(" ".join(text).split())
+
+
+def answers(number: int) -> str:
+    """The teacher's answers and solutions, line breaks made spaces."""
+    return " ".join(" ".join(c.source for c in cells(number) if "nbgrader" in c.metadata).split())
+
+
+def shown(name: str, **settings):
+    """The registry figure ``name`` drawn on a plain Figure at its app size."""
+    from matplotlib.figure import Figure
+
+    from interp.plots.registry import FIGURES
+
+    figure_class = FIGURES[name]
+    return figure_class(Figure(figsize=figure_class.size), **settings)

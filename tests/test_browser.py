@@ -22,10 +22,9 @@ from browser import (
     ARTIFACTS,
     ROOT,
     SCREENSHOTS,
-    chromium,
     free_port,
-    need_chromium,
     server,
+    stop,
     sync_api,
 )
 from browser import _wait_for as wait_for_server
@@ -36,19 +35,10 @@ from interp.plots import registry
 
 pytestmark = pytest.mark.browser
 
-playwright_api = sync_api()  # skips without Playwright, but not in CI
+sync_api()  # skips the module without Playwright, but not in CI
 
 #: The notebook JupyterLab shows (it keeps the others in the page, hidden).
 VISIBLE = ".jp-NotebookPanel:not(.lm-mod-hidden)"
-
-
-@pytest.fixture(scope="module")
-def browser():
-    need_chromium()
-    with playwright_api.sync_playwright() as playwright:
-        browser = chromium(playwright)
-        yield browser
-        browser.close()
 
 
 @pytest.fixture
@@ -328,11 +318,7 @@ def test_classroom_server_culls_closed_pages_and_caps_kernels(tmp_path, browser)
             assert kernel_processes(process.pid) <= 2
         wait_for_kernels(process.pid, lambda n: n == 0, seconds=60)
     finally:
-        process.terminate()
-        try:
-            process.wait(timeout=15)
-        except subprocess.TimeoutExpired:
-            process.kill()
+        stop(process)
 
 
 # --- figures a screen reader can follow ------------------------------------------------------

@@ -29,13 +29,13 @@ import time
 import pytest
 from browser import (
     ARTIFACTS,
+    CONTROL,
     FRAME_PROBE,
     ROOT,
     VISIBLE,
     app_root,
     base_app,
     canvas_pixels,
-    chromium,
     endpoint_a,
     figure_canvas,
     figure_of,
@@ -44,7 +44,6 @@ from browser import (
     kernel_truth,
     lessons,
     mismatch,
-    need_chromium,
     open_lesson,
     open_voila_apps,
     overflow,
@@ -61,7 +60,7 @@ from interp import apps
 
 pytestmark = pytest.mark.browser
 
-playwright_api = sync_api()  # skips without Playwright, but not in CI
+sync_api()  # skips the module without Playwright, but not in CI
 
 #: Every lesson and the apps it makes, in order; an app a lesson makes twice is NAME@2.
 LESSONS = lessons()
@@ -81,28 +80,6 @@ UNIQUE = list(dict.fromkeys(base_app(name) for name in APPS))
 #: At most this fraction of a figure's pixels may differ from the app drawn in the kernel.
 TOLERANCE = 0.001
 
-#: The control moved in each app: one that changes the whole figure (a slider, else a
-#: drop-down list).
-CONTROL = {
-    "the_problem": "A_w",
-    "projecting_a_line": "A_w",
-    "st_mapping": "w2",
-    "depth": "w2",
-    "attributes": "w2",
-    "colour_quad": "pitch",
-    "checkerboards": "pitch",
-    "checkerboards_outside": "pitch",
-    "uv_images": "pitch",
-    "outside_view": "pitch",
-    "linear_on_screen": "pitch",
-    "barycentrics": "pitch",
-    "shader": "pitch",
-    "clipping": "pitch",
-    "clipping_outside": "pitch",
-    "approximations": "pitch",
-    "texture_filtering": "pitch",
-    "mipmap_pyramid": "frequency",
-}
 
 #: Lessons whose figures went missing after some Run Alls: run again in fresh kernels.
 FLAKY_LESSONS = ("08_gpus.ipynb",)
@@ -122,15 +99,6 @@ def test_every_app_is_tested():
 
 
 # ---------------------------------------------------------------------------------- fixtures
-
-
-@pytest.fixture(scope="module")
-def browser():
-    need_chromium()
-    with playwright_api.sync_playwright() as playwright:
-        browser = chromium(playwright)
-        yield browser
-        browser.close()
 
 
 @pytest.fixture(scope="module")

@@ -13,7 +13,6 @@ import pytest
 from browser import server
 from test_browser import (  # noqa: F401 - fixtures
     assert_no_errors,
-    browser,
     drag_handle,
     open_and_run,
     page,

@@ -8,42 +8,16 @@ that test text fixed earlier keep it fixed.
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
-import nbformat
 import numpy as np
 import pytest
-from matplotlib.figure import Figure
 
 import interp
 from interp import depth, lerp, mistakes, theory
 from interp.plots.params import camera_from
 from interp.plots.registry import FIGURES
 
-SOURCES = Path(interp.__file__).resolve().parent.parent / "source" / "lessons"
-
-
-def cells(number: int) -> list[nbformat.NotebookNode]:
-    (path,) = SOURCES.glob(f"{number:02d}_*.ipynb")
-    return nbformat.read(path, as_version=4).cells
-
-
-def prose(number: int) -> str:
-    """A lesson's text as students read it (markdown cells that are not teacher answers), its
-    line breaks made spaces."""
-    text = [c.source for c in cells(number) if c.cell_type == "markdown" and not c.metadata]
-    return " ".join(" ".join(text).split())
-
-
-def answers(number: int) -> str:
-    """The teacher's answers and solutions, line breaks made spaces."""
-    return " ".join(" ".join(c.source for c in cells(number) if "nbgrader" in c.metadata).split())
-
-
-def shown(name: str, **settings):
-    figure_class = FIGURES[name]
-    return figure_class(Figure(figsize=figure_class.size), **settings)
-
+from helpers import answers, prose, shown
 
 # --- E1 -------------------------------------------------------------------------------------
 

@@ -7,47 +7,14 @@ recomputed from the library at the settings their prompts ask for, and found in 
 from __future__ import annotations
 
 from collections import Counter
-from pathlib import Path
 
-import matplotlib.pyplot as plt
-import nbformat
 import numpy as np
-import pytest
-from matplotlib.figure import Figure
 
 import interp
 from interp import frustum, mipmap
-from interp.plots.registry import FIGURES
 from interp.scenes import LESSON_SIZE
 
-SOURCES = Path(interp.__file__).resolve().parent.parent / "source" / "lessons"
-
-
-@pytest.fixture(autouse=True)
-def _close_figures():
-    yield
-    plt.close("all")
-
-
-def cells(number: int) -> list[nbformat.NotebookNode]:
-    (path,) = SOURCES.glob(f"{number:02d}_*.ipynb")
-    return nbformat.read(path, as_version=4).cells
-
-
-def prose(number: int) -> str:
-    """A lesson's text as students read it (markdown cells that are not teacher answers)."""
-    text = [c.source for c in cells(number) if c.cell_type == "markdown" and not c.metadata]
-    return " ".join(" ".join(text).split())
-
-
-def answers(number: int) -> str:
-    """The teacher's answers and solutions, line breaks made spaces."""
-    return " ".join(" ".join(c.source for c in cells(number) if "nbgrader" in c.metadata).split())
-
-
-def shown(name: str, **settings):
-    figure_class = FIGURES[name]
-    return figure_class(Figure(figsize=figure_class.size), **settings)
+from helpers import answers, cells, prose, shown
 
 
 def camera(**settings) -> interp.Camera:

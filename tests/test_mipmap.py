@@ -4,8 +4,6 @@ whole trilinear texture() (GL_LINEAR_MIPMAP_LINEAR)."""
 
 from __future__ import annotations
 
-import os
-
 import numpy as np
 import pytest
 
@@ -188,19 +186,6 @@ def test_quads_need_an_even_height():
 
 
 # ------------------------------------------------------------------------------ llvmpipe
-
-
-@pytest.fixture(scope="module")
-def gl():
-    try:
-        from interp import opengl
-
-        opengl.context()
-    except (ImportError, RuntimeError) as error:
-        if os.environ.get("CI"):
-            pytest.fail(f"CI must have OpenGL (EGL + Mesa): {error}")
-        pytest.skip(f"no OpenGL here: {error}")
-    return opengl
 
 
 #: llvmpipe computes in float32: its texture() agrees with the model of what it computes

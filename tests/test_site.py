@@ -24,14 +24,14 @@ from pathlib import Path
 import nbformat
 import numpy as np
 import pytest
-from browser import ARTIFACTS, CHROMIUM, ROOT, chromium
+from browser import ARTIFACTS, ROOT
 from PIL import Image
 
 from interp import editions
 
 pytestmark = pytest.mark.browser
 
-playwright_api = pytest.importorskip("playwright.sync_api")
+pytest.importorskip("playwright.sync_api")
 
 ALL_LESSONS = sorted((ROOT / "lessons").glob("*.ipynb"))
 #: The lessons the test's site is built from (INTERP_SITE_HTML: every lesson).
@@ -83,18 +83,6 @@ def server(site):
     yield f"http://127.0.0.1:{httpd.server_address[1]}"
     httpd.shutdown()
     httpd.server_close()
-
-
-@pytest.fixture(scope="module")
-def browser():
-    if not os.path.exists(CHROMIUM):
-        if os.environ.get("CI"):
-            pytest.fail(f"CI must have Chromium at {CHROMIUM} (apt-get install chromium)")
-        pytest.skip(f"no Chromium at {CHROMIUM}")
-    with playwright_api.sync_playwright() as playwright:
-        browser = chromium(playwright)
-        yield browser
-        browser.close()
 
 
 def pages(site: Path) -> list[str]:

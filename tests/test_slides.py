@@ -15,7 +15,7 @@ import time
 import nbformat
 import numpy as np
 import pytest
-from browser import ARTIFACTS, CHROMIUM, ROOT, chromium, free_port
+from browser import ARTIFACTS, ROOT, free_port, stop
 from browser import _wait_for as wait_for_server
 from PIL import Image
 
@@ -131,84 +131,73 @@ def slides_server(tmp_path):
         wait_for_server(base + "/", process, log)
         yield base
     finally:
-        process.terminate()
-        try:
-            process.wait(timeout=15)
-        except subprocess.TimeoutExpired:
-            process.kill()
+        stop(process)
 
 
 @pytest.mark.browser
-def test_the_deck_opens_advances_and_a_slider_moves_the_figure(slides_server, request):
-    playwright_api = pytest.importorskip("playwright.sync_api")
-    if not os.path.exists(CHROMIUM):
-        if os.environ.get("CI"):
-            pytest.fail(f"CI must have Chromium at {CHROMIUM} (apt-get install chromium)")
-        pytest.skip(f"no Chromium at {CHROMIUM}")
-    with playwright_api.sync_playwright() as playwright:
-        browser = chromium(playwright)
-        page = browser.new_page(viewport={"width": 1400, "height": 1000})
-        errors, elsewhere = [], []
-        page.on("console", lambda m: m.type == "error" and errors.append(m.text))
-        page.on("pageerror", lambda e: errors.append(str(e)))
+def test_the_deck_opens_advances_and_a_slider_moves_the_figure(slides_server, browser, request):
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    errors, elsewhere = [], []
+    page.on("console", lambda m: m.type == "error" and errors.append(m.text))
+    page.on("pageerror", lambda e: errors.append(str(e)))
 
-        def route(route):
-            if route.request.url.startswith(slides_server + "/"):
-                route.continue_()
-            else:
-                elsewhere.append(route.request.url)
-                route.abort()
+    def route(route):
+        if route.request.url.startswith(slides_server + "/"):
+            route.continue_()
+        else:
+            elsewhere.append(route.request.url)
+            route.abort()
 
-        page.route("**/*", route)
-        try:
-            page.goto(f"{slides_server}/voila/render/01_the_problem.ipynb", timeout=120_000)
-            page.wait_for_selector(".reveal.ready", timeout=120_000)
-            page.wait_for_selector("#rendered_cells", state="visible", timeout=120_000)
-            present = page.locator(CURRENT)
-            assert "1. The problem" in present.text_content()
-            assert "%matplotlib" not in page.locator("body").inner_text(), "no code on slides"
-            # Equations are typeset (by Voilà's renderers), not left as TeX.
-            page.wait_for_selector(f"{CURRENT} mjx-container", state="attached", timeout=30_000)
-            assert "$" not in present.inner_text()
+    page.route("**/*", route)
+    try:
+        page.goto(f"{slides_server}/voila/render/01_the_problem.ipynb", timeout=120_000)
+        page.wait_for_selector(".reveal.ready", timeout=120_000)
+        page.wait_for_selector("#rendered_cells", state="visible", timeout=120_000)
+        present = page.locator(CURRENT)
+        assert "1. The problem" in present.text_content()
+        assert "%matplotlib" not in page.locator("body").inner_text(), "no code on slides"
+        # Equations are typeset (by Voilà's renderers), not left as TeX.
+        page.wait_for_selector(f"{CURRENT} mjx-container", state="attached", timeout=30_000)
+        assert "$" not in present.inner_text()
+        page.keyboard.press("Space")
+        wait_until(lambda: page.evaluate("location.hash") == "#/1", 10, "did not advance")
+        assert "Projection divides by depth" in present.text_content()
+        # On to the sub-slide with the figure: its canvas is live (ipympl).
+        canvas = page.locator(f"{CURRENT} .jupyter-matplotlib-canvas-div canvas")
+        for _ in range(6):
+            if canvas.count() and canvas.first.is_visible():
+                break
             page.keyboard.press("Space")
-            wait_until(lambda: page.evaluate("location.hash") == "#/1", 10, "did not advance")
-            assert "Projection divides by depth" in present.text_content()
-            # On to the sub-slide with the figure: its canvas is live (ipympl).
-            canvas = page.locator(f"{CURRENT} .jupyter-matplotlib-canvas-div canvas")
-            for _ in range(6):
-                if canvas.count() and canvas.first.is_visible():
-                    break
-                page.keyboard.press("Space")
-                page.wait_for_timeout(800)
-            canvas = canvas.first
-            canvas.wait_for(state="visible", timeout=60_000)
-            assert re.fullmatch(r"#/\d+/\d+", page.evaluate("location.hash"))
-            before = wait_until(
-                lambda: (p := pixels(canvas)).std() > 10 and p, 60, "the figure was never drawn"
-            )
-            control = page.locator(f"{CURRENT} .widget-slider").first
-            # presentation mode (INTERP_PRESENTATION=1) makes the apps' sliders 380 px wide
-            # (three to a row on a projector), wider than the 300 px they have in a notebook
-            assert control.evaluate("e => e.offsetWidth") >= 360
-            readout = control.locator(".widget-readout")
-            start = readout.inner_text()
-            handle = control.locator(".noUi-handle")
-            box = handle.bounding_box()
-            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
-            page.mouse.move(x, y)
-            page.mouse.down()
-            for step in range(1, 6):
-                page.mouse.move(x + 16 * step, y)
-            page.mouse.up()
-            wait_until(lambda: readout.inner_text() != start, 20, "the slider did not move")
-            wait_until(
-                lambda: np.abs(pixels(canvas) - before).sum() > 0, 30, "the figure did not change"
-            )
-            assert not errors, errors
-            assert not elsewhere, f"requests to other hosts: {elsewhere}"
-        except BaseException:
-            ARTIFACTS.mkdir(exist_ok=True)
-            page.screenshot(path=str(ARTIFACTS / f"{request.node.name}.png"))
-            raise
-        finally:
-            browser.close()
+            page.wait_for_timeout(800)
+        canvas = canvas.first
+        canvas.wait_for(state="visible", timeout=60_000)
+        assert re.fullmatch(r"#/\d+/\d+", page.evaluate("location.hash"))
+        before = wait_until(
+            lambda: (p := pixels(canvas)).std() > 10 and p, 60, "the figure was never drawn"
+        )
+        control = page.locator(f"{CURRENT} .widget-slider").first
+        # presentation mode (INTERP_PRESENTATION=1) makes the apps' sliders 380 px wide
+        # (three to a row on a projector), wider than the 300 px they have in a notebook
+        assert control.evaluate("e => e.offsetWidth") >= 360
+        readout = control.locator(".widget-readout")
+        start = readout.inner_text()
+        handle = control.locator(".noUi-handle")
+        box = handle.bounding_box()
+        x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+        page.mouse.move(x, y)
+        page.mouse.down()
+        for step in range(1, 6):
+            page.mouse.move(x + 16 * step, y)
+        page.mouse.up()
+        wait_until(lambda: readout.inner_text() != start, 20, "the slider did not move")
+        wait_until(
+            lambda: np.abs(pixels(canvas) - before).sum() > 0, 30, "the figure did not change"
+        )
+        assert not errors, errors
+        assert not elsewhere, f"requests to other hosts: {elsewhere}"
+    except BaseException:
+        ARTIFACTS.mkdir(exist_ok=True)
+        page.screenshot(path=str(ARTIFACTS / f"{request.node.name}.png"))
+        raise
+    finally:
+        page.close()
