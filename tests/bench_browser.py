@@ -177,14 +177,14 @@ def first_frame_after(page, canvas, t: float, timeout: float = 10.0) -> float | 
 # ------------------------------------------------------------------------------ the actions
 
 
-def step_with_keys(page, handle, canvas, key: str, steps: int) -> tuple[list[float], int]:
-    """Press ``key`` on the focused slider handle ``steps`` times, each after the last has
-    settled; the latencies (ms) and how many steps changed nothing within 10 s."""
-    handle.focus()
+def timed_steps(page, canvas, act, event: str, steps: int) -> tuple[list[float], int]:
+    """``act(i)`` for i = 1 to ``steps``, each after the last has settled: the latencies (ms)
+    from the input ``event`` to the first changed picture, and how many steps changed nothing
+    within 10 s."""
     latencies, misses = [], 0
-    for _ in range(steps):
-        page.keyboard.press(key)
-        t_in = last_input(page, "keydown")
+    for i in range(1, steps + 1):
+        act(i)
+        t_in = last_input(page, event)
         shown = first_frame_after(page, canvas, t_in)
         if shown is None:
             misses += 1
@@ -194,26 +194,24 @@ def step_with_keys(page, handle, canvas, key: str, steps: int) -> tuple[list[flo
     return latencies, misses
 
 
+def step_with_keys(page, handle, canvas, key: str, steps: int) -> tuple[list[float], int]:
+    """Press ``key`` on the focused slider handle ``steps`` times (:func:`timed_steps`)."""
+    handle.focus()
+    return timed_steps(page, canvas, lambda i: page.keyboard.press(key), "keydown", steps)
+
+
 def step_with_mouse(page, start: tuple[float, float], dx: float, canvas, steps: int):
-    """Press at ``start``, then move ``dx`` px ``steps`` times, each after the last settled;
-    release. The latencies (ms) and the steps that changed nothing."""
+    """Press at ``start``, then move ``dx`` px ``steps`` times (:func:`timed_steps`); release."""
     x, y = start
     page.mouse.move(x, y)
     page.mouse.down()
     wait_idle(page, quiet_ms=150)
-    latencies, misses = [], 0
-    for i in range(1, steps + 1):
-        page.mouse.move(x + dx * i, y)
-        t_in = last_input(page, "pointermove")
-        shown = first_frame_after(page, canvas, t_in)
-        if shown is None:
-            misses += 1
-        else:
-            latencies.append(shown - t_in)
-        wait_idle(page, quiet_ms=100)
+    result = timed_steps(
+        page, canvas, lambda i: page.mouse.move(x + dx * i, y), "pointermove", steps
+    )
     page.mouse.up()
     wait_idle(page, quiet_ms=300)
-    return latencies, misses
+    return result
 
 
 def drag(page, start: tuple[float, float], amplitude: float, seconds: float) -> None:
