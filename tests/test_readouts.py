@@ -180,13 +180,17 @@ def shader(p):
     return [f"{from_smooth:.2f}"]
 
 
-def clipping(p):
-    camera = _camera(p, 320, 240)
-    scene = interp.ground_plane(camera, LESSON_SIZE, quads=p["quads"])
+def _clipped(p):
+    """The ground at 320 x 240: the scene, how many triangles show, and as how many pieces."""
+    scene = interp.ground_plane(_camera(p, 320, 240), LESSON_SIZE, quads=p["quads"])
     frags = interp.fragments(scene.clip, scene.uv, scene.triangles, 320, 240)
-    visible = len(np.unique(frags.clipped.source))
+    return scene, len(np.unique(frags.clipped.source)), len(frags.clipped)
+
+
+def clipping(p):
+    scene, visible, pieces = _clipped(p)
     return [
-        f"{visible} triangles in view became {len(frags.clipped)}",
+        f"{visible} triangles in view became {pieces}",
         f"{int(np.sum(scene.clip[:, 3] <= 0))} of the ground's {len(scene.clip)} vertices",
     ]
 
@@ -238,13 +242,10 @@ def _near_cuts(p, width=320, height=240):
 
 
 def outside_view(p):
-    camera = _camera(p, 320, 240)
-    scene = interp.ground_plane(camera, LESSON_SIZE, quads=p["quads"])
-    frags = interp.fragments(scene.clip, scene.uv, scene.triangles, 320, 240)
-    visible = len(np.unique(frags.clipped.source))
+    _, visible, pieces = _clipped(p)
     return [
         *_eye(p),
-        f"keeps {visible} of {2 * p['quads'] ** 2} triangles as {len(frags.clipped)} pieces",
+        f"keeps {visible} of {2 * p['quads'] ** 2} triangles as {pieces} pieces",
         _near_cuts(p),
     ]
 
