@@ -265,6 +265,25 @@ def build_teacher(root: Path, out: Path, html: bool = True) -> list[Path]:
     return written
 
 
+def figure_alts(cell: nbformat.NotebookNode) -> list[tuple[str, str]]:
+    """The pictures among a cell's outputs that carry alt text (the apps put it in the output's
+    metadata), as (base64 PNG, alt text) pairs.
+
+    Examples
+    --------
+    >>> output = nbformat.v4.new_output(
+    ...     "display_data", {"image/png": "iVBO"}, metadata={"image/png": {"alt": "A & B"}})
+    >>> figure_alts(nbformat.v4.new_code_cell(outputs=[output]))
+    [('iVBO', 'A & B')]
+    """
+    return [
+        (output.data["image/png"], output.metadata["image/png"]["alt"])
+        for output in cell.get("outputs", [])
+        if "image/png" in output.get("data", {})
+        and "alt" in output.get("metadata", {}).get("image/png", {})
+    ]
+
+
 def with_alt_text(page: str, notebook: nbformat.NotebookNode) -> str:
     """``page``, nbconvert's HTML of ``notebook``, with each figure's alt text (which the apps
     put in their outputs' metadata, and nbconvert's template leaves out) on its ``<img>``.
@@ -279,13 +298,7 @@ def with_alt_text(page: str, notebook: nbformat.NotebookNode) -> str:
     """
     from html import escape
 
-    alt = {
-        output.data["image/png"].strip(): output.metadata["image/png"]["alt"]
-        for cell in notebook.cells
-        for output in cell.get("outputs", [])
-        if "image/png" in output.get("data", {})
-        and "alt" in output.get("metadata", {}).get("image/png", {})
-    }
+    alt = {png.strip(): text for cell in notebook.cells for png, text in figure_alts(cell)}
 
     def labelled(match: re.Match) -> str:
         text = alt.get(match["data"].strip())

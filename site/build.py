@@ -60,11 +60,7 @@ def static_lesson(path: Path, workdir: Path) -> nbformat.NotebookNode:
             cell.outputs = [o for o in cell.outputs if WIDGET_VIEW not in o.get("data", {})]
             # The figure's alt text (an app's title and key result, in its output's metadata),
             # where MyST-NB looks for it: the cell's image options.
-            alts = {
-                o.metadata["image/png"]["alt"]
-                for o in cell.outputs
-                if "alt" in o.get("metadata", {}).get("image/png", {})
-            }
+            alts = {text for _, text in editions.figure_alts(cell)}
             if len(alts) == 1:
                 cell.metadata["mystnb"] = {"image": {"alt": alts.pop()}}
     notebook.metadata.pop("widgets", None)
