@@ -1309,7 +1309,7 @@ QUIZZES: dict[int, list[Question]] = {
             "Looking straight down at the ground quad, the affine error is:",
             "a",
             a=("Zero.", "every corner is at the same depth, so affine is exact."),
-            b=("At its largest.", "it is largest seen low and flat, not from above."),
+            b=("At its largest.", "it is large seen low and flat, and zero from above."),
             c=("The same as at the default camera.", "the depths no longer differ."),
         ),
         _q(

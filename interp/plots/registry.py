@@ -784,7 +784,8 @@ class Shader(LessonFigure):
     caption = (
         "A colour per corner across the ground quad, as the fragment shader receives it: smooth "
         "(left) beside, on the right, a vertex shader that divided by w itself and wrote w = 1: "
-        "smooth then has nothing to correct with and gives noperspective's colours. The right "
+        "smooth then has nothing to correct with and gives noperspective's colours (while every "
+        "corner is in front of the camera; behind it, the divided positions are wrong). The right "
         "panel can also show noperspective, or flat (each triangle the colour of its provoking "
         "vertex, the last). (Lesson 8)"
     )
@@ -963,11 +964,11 @@ class TextureFiltering(LessonFigure):
     title = "Texture filtering: footprints, mip levels, trilinear"
     description = "pixel footprints in the texture, OpenGL's level of detail, the filtered image"
     caption = (
-        "Left: the footprints of a grid of pixels in a 256 x 256-texel texture of 64 x 64 checks "
-        "(parallelograms, drawn 8 times their size): small and square near the camera, long "
-        "and thin far away. Middle: OpenGL's level of detail λ = log2 of the longer footprint "
-        "edge in texels, per pixel, one colour per mipmap level. Right: the image with "
-        "trilinear filtering from the mipmap (GL_LINEAR_MIPMAP_LINEAR). (Lesson 9)"
+        "Left: the footprints of a grid of pixels in a 256 x 256-texel checkerboard texture "
+        "(parallelograms, drawn enlarged): small and square near the camera, long and thin far "
+        "away. Middle: OpenGL's level of detail λ = log2 of the longer footprint edge in "
+        "texels, per pixel, one colour per mipmap level. Right: the image filtered as chosen; by "
+        "default trilinear, from the mipmap (GL_LINEAR_MIPMAP_LINEAR). (Lesson 9)"
     )
     size = (9.0, 3.3)
     print_size = (WIDE, 2.3)
