@@ -136,6 +136,11 @@ class Blitter:
         for artist in self.layers:
             self.figure.draw_artist(artist)
         canvas.blit(self.figure.bbox)
+        # What is on screen is now up to date. Left stale, the figure would be drawn again by
+        # pyplot, which (with ``%matplotlib widget``) redraws every stale figure after each
+        # widget message the kernel handles: every slider step and mouse move then cost a
+        # second, full redraw, asked for by the browser, and a drag left seconds of them queued.
+        self.figure.stale = False
 
     def _capture_background(self) -> None:
         """Render everything but the layers a blit draws, and keep that picture."""
