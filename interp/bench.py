@@ -142,15 +142,12 @@ def table(
 def app_lines(repeat: int) -> list[str]:
     """One slider step of the checkerboard app as a live canvas does it: compute, blit, and the
     PNG frame for the browser (timed on its own)."""
-    import io
-
     import matplotlib
 
     matplotlib.use("agg")
-    from PIL import Image
 
     from interp import apps
-    from interp.apps._live import PNG_LEVEL, Blitter
+    from interp.apps._live import Blitter, png
 
     app = apps.checkerboards()
     blitter = Blitter(app.figure, app.plot.dynamic)
@@ -162,10 +159,7 @@ def app_lines(repeat: int) -> list[str]:
         blitter.draw()
 
     def frame() -> bytes:
-        pixels = np.asarray(app.figure.canvas.buffer_rgba())
-        with io.BytesIO() as png:
-            Image.fromarray(pixels).save(png, format="png", compress_level=PNG_LEVEL)
-            return png.getvalue()
+        return png(np.asarray(app.figure.canvas.buffer_rgba()))
 
     def full_redraw() -> None:
         app.set(pitch=next(pitches))

@@ -14,7 +14,6 @@ after warming up, with the allocator setting the live apps use.
 from __future__ import annotations
 
 import argparse
-import io
 import time
 
 import numpy as np
@@ -52,9 +51,7 @@ class _Stepper:
         self._own = 0.0
 
     def step(self, keep: bool) -> None:
-        from PIL import Image
-
-        from interp.apps._live import PNG_LEVEL
+        from interp.apps._live import png
 
         self._own = 0.0
         self.steps += 1
@@ -63,9 +60,7 @@ class _Stepper:
         t1 = time.perf_counter()
         self.app.blitter.draw()
         t2, c2 = time.perf_counter(), time.process_time()
-        pixels = np.asarray(self.app.figure.canvas.buffer_rgba())
-        with io.BytesIO() as png:
-            Image.fromarray(pixels).save(png, format="png", compress_level=PNG_LEVEL)
+        png(np.asarray(self.app.figure.canvas.buffer_rgba()))
         t3 = time.perf_counter()
         if keep:
             for name, seconds in zip(

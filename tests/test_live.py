@@ -249,3 +249,24 @@ def test_an_orbit_of_3d_axes_redraws_everything_once():
     blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
     figure.canvas.draw()
     np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
+
+
+@pytest.mark.parametrize("shape", [(1, 1), (7, 13), (250, 820)])
+def test_a_live_frame_decodes_to_the_figure_pixel_for_pixel(shape):
+    """The frames are PNG files written by the package (``png``), not by PIL: PIL's decoder
+    (and so any browser's) must read back exactly the pixels, transparency included."""
+    import io
+
+    from PIL import Image
+
+    from interp.apps._live import png
+
+    rgba = np.random.default_rng(shape[1]).integers(0, 256, (*shape, 4), dtype=np.uint8)
+    if shape == (250, 820):  # a real frame: the checkerboard app's figure
+        app = apps.checkerboards()
+        app.figure.canvas.draw()
+        rgba = np.asarray(app.figure.canvas.buffer_rgba())
+        assert rgba.shape[:2] == shape
+    decoded = Image.open(io.BytesIO(png(rgba)))
+    assert decoded.mode == "RGBA"
+    np.testing.assert_array_equal(np.asarray(decoded), rgba)

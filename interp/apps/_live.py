@@ -10,9 +10,9 @@ behind it. Three things make that so (measured in the browser by ``make bench-br
 - **Latest value wins.** A slider change only marks the figure out of date; the drawing happens
   once the kernel has taken in the messages already waiting, with the newest values. A drag
   never builds a backlog, and the last value is always drawn.
-- **Cheap, whole frames.** Each frame is the whole figure as a PNG at the fastest zlib level
-  (see :func:`_frame_image`): about the cost of ipympl's default diff frames, and a frame the
-  browser drops can never leave a figure half drawn.
+- **Cheap, whole frames.** Each frame is the whole figure as a PNG written for speed (see
+  :func:`png`): no row filters, the fastest zlib level; less than half the time of ipympl's
+  default diff frames, and a frame the browser drops can never leave a figure half drawn.
 
 And one thing makes them right: **drawing takes turns** (:data:`DRAW_LOCK`). ipykernel 7 handles
 widget messages on a subshell thread beside the main one (JupyterLab 4.6 sends comm messages
@@ -24,8 +24,9 @@ and a torn background stayed on screen until the next full draw.
 from __future__ import annotations
 
 import asyncio
-import io
+import struct
 import threading
+import zlib
 from collections.abc import Callable
 from types import MethodType
 
@@ -34,10 +35,11 @@ from matplotlib.artist import Artist
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.text import Text
-from PIL import Image
 
 #: zlib level of live frames (PIL's default is 6).
 PNG_LEVEL = 1
+#: The eight bytes every PNG file starts with.
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 #: How long a pending redraw waits for more slider messages to arrive, in seconds.
 SETTLE = 0.004
 #: Held while an app changes or draws its figure, on whichever thread: matplotlib is not
@@ -223,14 +225,50 @@ class Coalescer:
         self._draw()
 
 
+def png(rgba: np.ndarray, level: int = PNG_LEVEL) -> bytes:
+    """An RGBA image as a PNG file, written for speed: every row unfiltered, zlib at ``level``.
+
+    PIL tries five filters on every row and keeps the best; for a figure (flat colours, text)
+    the unfiltered rows compress about as well and take less than half the time (an 820 x 474
+    frame: 4.7 ms against PIL's 11.7 ms at zlib level 1, 91 kB against 99 kB).
+
+    Examples
+    --------
+    >>> import io
+    >>> from PIL import Image
+    >>> rgba = np.zeros((2, 3, 4), np.uint8); rgba[..., 0] = 255; rgba[..., 3] = 255
+    >>> picture = Image.open(io.BytesIO(png(rgba)))
+    >>> picture.mode, picture.size, picture.getpixel((2, 1))
+    ('RGBA', (3, 2), (255, 0, 0, 255))
+    """
+    height, width, _ = rgba.shape
+    rows = np.empty((height, 1 + 4 * width), np.uint8)
+    rows[:, 0] = 0  # filter type None
+    rows[:, 1:] = rgba.reshape(height, 4 * width)
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return (
+            struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+        )
+
+    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)  # 8-bit RGBA, no interlace
+    return (
+        PNG_SIGNATURE
+        + chunk(b"IHDR", header)
+        + chunk(b"IDAT", zlib.compress(rows.data, level))
+        + chunk(b"IEND", b"")
+    )
+
+
 def _frame_image(canvas: object) -> bytes | None:
-    """The frame to send: the whole figure as a PNG at :data:`PNG_LEVEL`.
+    """The frame to send: the whole figure as a :func:`png`.
 
     Replaces matplotlib's ``FigureCanvasWebAggCore.get_diff_image``, which sends only the pixels
     that changed since the last frame. ipympl's view drops a frame that is still loading when
     the next one arrives; with frames sent as fast as the kernel draws them, a lost full frame
-    followed by a diff left a figure blank but for the changed pixels. A whole frame at zlib
-    level 1 costs about what a diff did at the default level 6, and any frame stands alone.
+    followed by a diff left a figure blank but for the changed pixels. A whole frame written
+    by :func:`png` costs less than half of a diff at PIL's default level 6, and any frame
+    stands alone.
     """
     if not canvas._png_is_old:
         return None
@@ -243,9 +281,7 @@ def _frame_image(canvas: object) -> bytes | None:
     canvas.set_image_mode("full")
     canvas._force_full = False
     canvas._png_is_old = False
-    with io.BytesIO() as png:
-        Image.fromarray(pixels).save(png, format="png", compress_level=PNG_LEVEL)
-        return png.getvalue()
+    return png(pixels)
 
 
 def take_turns(canvas: object) -> None:
@@ -269,6 +305,6 @@ def take_turns(canvas: object) -> None:
 
 
 def cheap_frames(canvas: object) -> None:
-    """Make an ipympl canvas send whole frames encoded at :data:`PNG_LEVEL`."""
+    """Make an ipympl canvas send whole frames written by :func:`png`."""
     if hasattr(canvas, "get_diff_image"):
         canvas.get_diff_image = MethodType(_frame_image, canvas)
