@@ -14,6 +14,7 @@ import pytest
 
 from interp import apps
 from interp.apps._live import Blitter, Coalescer
+from interp.plots import styled
 
 #: A control of each app and a step for it.
 STEPS = {
@@ -270,3 +271,35 @@ def test_a_live_frame_decodes_to_the_figure_pixel_for_pixel(shape):
     decoded = Image.open(io.BytesIO(png(rgba)))
     assert decoded.mode == "RGBA"
     np.testing.assert_array_equal(np.asarray(decoded), rgba)
+
+
+def test_a_kept_legend_is_the_legend_drawn_again_with_a_curve_behind_it(monkeypatch):
+    """An opaque legend above a changing curve is drawn once and then put back as a picture;
+    with the curve passing right behind it, and across its edge, the frame must still be the
+    full redraw, and the legend must not have been laid out and drawn again."""
+    from matplotlib.legend import Legend
+
+    with styled():
+        figure = plt.figure(figsize=(3, 2))
+        ax = figure.add_subplot()
+        (curve,) = ax.plot([0, 1], [0.9, 0.9], label="a curve")
+        ax.plot([0, 1], [0, 1], label="a static line", zorder=1)  # under the curve
+        legend = ax.legend(loc="upper left")
+        ax.set_xlim(0, 1)
+        ax.set_ylim(0, 1)
+    blitter = Blitter(figure, [curve])
+    blitter.draw()
+    draws = []
+    draw = Legend.draw
+    monkeypatch.setattr(Legend, "draw", lambda self, r: (draws.append(1), draw(self, r))[1])
+    box = ax.transAxes.inverted().transform(legend.get_window_extent())
+    for y in np.linspace(box[0, 1] - 0.05, box[1, 1] + 0.05, 7):  # below, through, above it
+        curve.set_ydata([y, 1 - y])
+        blitter.draw()
+        blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
+        monkeypatch.setattr(Legend, "draw", draw)
+        figure.canvas.draw()
+        monkeypatch.setattr(Legend, "draw", lambda self, r: (draws.append(1), draw(self, r))[1])
+        np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
+    assert blitter.blits == 7
+    assert draws == [], "the legend was drawn again instead of put back"

@@ -6,7 +6,9 @@ behind it. Three things make that so (measured in the browser by ``make bench-br
 - **Blitting.** The figure's static parts (axes, ticks, labels, legends, colorbars) are drawn
   once and kept as a background; a step restores it and draws only the artists the figure's
   plots change (:attr:`interp.plots.LessonFigure.dynamic`), which is a fraction of a full
-  redraw. A change of axis limits, legend or size is noticed and redraws everything once.
+  redraw. A legend drawn above changing curves is kept as a picture too (it is opaque), and
+  put back instead of being laid out and drawn again: that was a third of a step in the 1D
+  apps. A change of axis limits, legend or size is noticed and redraws everything once.
 - **Latest value wins.** A slider change only marks the figure out of date; the drawing happens
   once the kernel has taken in the messages already waiting, with the newest values. A drag
   never builds a backlog, and the last value is always drawn.
@@ -24,6 +26,7 @@ and a torn background stayed on screen until the next full draw.
 from __future__ import annotations
 
 import asyncio
+import math
 import struct
 import threading
 import zlib
@@ -34,7 +37,9 @@ import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.legend import Legend
 from matplotlib.text import Text
+from matplotlib.transforms import Bbox
 
 #: zlib level of live frames (PIL's default is 6).
 PNG_LEVEL = 1
@@ -109,7 +114,9 @@ class Blitter:
     -----
     The blit draws, in each axes, the dynamic artists and every static one stacked above them
     (spines, legends), in the order a full draw uses; the background is everything else. So a
-    blitted frame matches a full redraw.
+    blitted frame matches a full redraw. An opaque legend among them is drawn once; after that
+    the blit draws only its box and puts back the picture of its inside (see
+    :meth:`_draw_legend`).
     """
 
     def __init__(self, figure: Figure, dynamic: list[Artist] | None) -> None:
@@ -118,6 +125,8 @@ class Blitter:
         self.background = None
         self.key: tuple | None = None
         self.layers: list[Artist] = []
+        #: The inside of each opaque legend among the layers, as drawn: id -> saved region.
+        self.legends: dict[int, object] = {}
         self.full_draws = self.blits = 0
 
     def draw(self) -> None:
@@ -136,7 +145,10 @@ class Blitter:
             canvas.restore_region(self.background)
             self.blits += 1
         for artist in self.layers:
-            self.figure.draw_artist(artist)
+            if isinstance(artist, Legend) and _opaque(artist):
+                self._draw_legend(artist)
+            else:
+                self.figure.draw_artist(artist)
         canvas.blit(self.figure.bbox)
         # What is on screen is now up to date. Left stale, the figure would be drawn again by
         # pyplot, which (with ``%matplotlib widget``) redraws every stale figure after each
@@ -144,8 +156,29 @@ class Blitter:
         # second, full redraw, asked for by the browser, and a drag left seconds of them queued.
         self.figure.stale = False
 
+    def _draw_legend(self, legend: Legend) -> None:
+        """Draw a static, opaque legend: whole the first time, keeping the picture of its
+        inside; then its box alone (whose edge pixels blend with what is behind) and that
+        picture put back, which is what drawing it whole would give, pixel for pixel."""
+        kept = self.legends.get(id(legend))
+        if kept is not None:
+            self.figure.draw_artist(legend.legendPatch)
+            self.figure.canvas.restore_region(kept)
+            return
+        self.figure.draw_artist(legend)
+        box = legend.legendPatch.get_window_extent()
+        inside = Bbox.from_extents(
+            math.ceil(box.x0) + 1,
+            math.ceil(box.y0) + 1,
+            math.floor(box.x1) - 1,
+            math.floor(box.y1) - 1,
+        )
+        if inside.width > 0 and inside.height > 0:
+            self.legends[id(legend)] = self.figure.canvas.copy_from_bbox(inside)
+
     def _capture_background(self) -> None:
         """Render everything but the layers a blit draws, and keep that picture."""
+        self.legends = {}
         self.layers = self._layers()
         shown = [(a, a.get_visible()) for a in self.layers]
         # A hidden title has no extent, and matplotlib would then lift it off the axes: keep
@@ -191,6 +224,27 @@ class Blitter:
         in_axes = {id(a) for a in layers}
         layers += [a for a in self.dynamic if id(a) not in in_axes]
         return layers
+
+
+def _opaque(legend: Legend) -> bool:
+    """Whether nothing behind a legend shows through the inside of its box.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> ax = plt.figure().add_subplot()
+    >>> _ = ax.plot([0, 1], label="a")
+    >>> _opaque(ax.legend(framealpha=1)), _opaque(ax.legend(framealpha=0.8))
+    (True, False)
+    """
+    patch = legend.legendPatch
+    return (
+        legend.get_visible()
+        and patch.get_visible()
+        and patch.get_facecolor()[3] == 1.0
+        and not legend.shadow
+        and legend.get_alpha() in (None, 1.0)
+    )
 
 
 class Coalescer:
