@@ -208,7 +208,8 @@ def chromium(playwright):
 # dirty canvases once per animation frame and records ``{t, h}`` with ``performance.now()``
 # whenever they differ from the last recorded frame. So a "frame" is a distinct picture as it
 # is about to be painted, at most one per display frame; identical redraws are not counted.
-# Input events (key and pointer) are recorded with their ``timeStamp``, on the same clock.
+# Input events (key and pointer) are recorded with their ``timeStamp``, on the same clock, and
+# so is every ``toDataURL`` call (``probe.dataUrls``).
 
 FRAME_PROBE = r"""
 (() => {
@@ -242,6 +243,13 @@ FRAME_PROBE = r"""
     requestAnimationFrame(tick);
   };
   requestAnimationFrame(tick);
+  // When pictures of a canvas are encoded as data URLs (ipympl did it on every frame).
+  probe.dataUrls = [];
+  const toDataURL = HTMLCanvasElement.prototype.toDataURL;
+  HTMLCanvasElement.prototype.toDataURL = function (...args) {
+    probe.dataUrls.push(performance.now());
+    return toDataURL.apply(this, args);
+  };
   for (const type of ['keydown', 'pointerdown', 'pointermove', 'pointerup']) {
     window.addEventListener(type, (e) => probe.inputs.push({type, t: e.timeStamp}), true);
   }

@@ -25,7 +25,7 @@ import numpy as np
 from IPython.display import HTML, Javascript, display
 
 from interp._allocator import keep_freed_memory
-from interp.apps._live import DRAW_LOCK, Blitter, Coalescer, cheap_frames, take_turns
+from interp.apps._live import DRAW_LOCK, FRAME_JS, Blitter, Coalescer, cheap_frames, take_turns
 from interp.plots import styled
 from interp.plots.params import Param
 from interp.plots.registry import LessonFigure
@@ -218,7 +218,8 @@ class App:
     def _ipython_display_(self) -> None:
         if _PRESENTATION["on"]:  # larger prose and controls on the whole page
             display(HTML(PRESENTATION_CSS))
-        display(Javascript(SLIDER_NAMES_JS))
+        # One script: the sliders' names, and with ipympl the frames' fast path.
+        display(Javascript(SLIDER_NAMES_JS + (FRAME_JS if self.live else "")))
         if self.live:
             display(self.widget)
         else:  # a picture with alt text, the result as text, then the controls
