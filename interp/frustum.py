@@ -26,6 +26,7 @@ import numpy as np
 from interp import _checks
 from interp.camera import Camera
 from interp.clipping import PLANES, _clip_against, _Soup, clip_triangles
+from interp.raster import drawn
 from interp.scenes import Scene
 
 #: The image's corners in NDC (x, y), counter-clockwise from the bottom left.
@@ -225,8 +226,12 @@ class ClippedScene:
     in_view: int
 
 
-def clipped_in_world(scene: Scene) -> ClippedScene:
-    """Clip ``scene``'s triangles as the rasterizer does and carry the pieces to world space.
+def clipped_in_world(scene: Scene, width: int, height: int) -> ClippedScene:
+    """Clip ``scene``'s triangles as the rasterizer does at ``width`` x ``height`` pixels and
+    carry the pieces it draws to world space.
+
+    Pieces the rasterizer leaves out, having no area on screen, are left out: a plane through
+    a corner makes some, and a camera in the ground's plane sees every piece edge-on.
 
     Examples
     --------
@@ -235,7 +240,7 @@ def clipped_in_world(scene: Scene) -> ClippedScene:
 
     >>> from interp.scenes import ground_plane
     >>> scene = ground_plane(Camera(height=0.3, pitch=15.0, distance=1.0), size=4.0, quads=2)
-    >>> clipped = clipped_in_world(scene)
+    >>> clipped = clipped_in_world(scene, 320, 240)
     >>> len(clipped.visible) > clipped.in_view, len(clipped.cut_off) > 0
     (True, True)
     >>> bool(np.allclose(clipped.new_vertices[:, 1], 0.0))    # all on the ground
@@ -243,6 +248,8 @@ def clipped_in_world(scene: Scene) -> ClippedScene:
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be an interp.Scene, got {type(scene).__name__}")
+    width = _checks.positive_int(width, "width")
+    height = _checks.positive_int(height, "height")
     camera = scene.camera
     pieces = clip_triangles(scene.clip, scene.uv, scene.triangles)
     # The other side of the near plane (z < -w), with clipping's own one-plane pass: positions
@@ -257,16 +264,12 @@ def clipped_in_world(scene: Scene) -> ClippedScene:
     cut_off = world[counts[1] :].reshape(-1, 3, 3)
 
     # Clipping keeps an input vertex bit for bit, but for a power of two (it scales each
-    # triangle so); any other vertex is new. Pieces of no area (a plane through a vertex) are
-    # left out, as the rasterizer leaves them out.
+    # triangle so); any other vertex is new.
     original = _unit(scene.clip[scene.triangles[pieces.source]])  # (T, 3, 4) the input triangles
     same = np.all(_unit(pieces.clip)[:, :, None, :] == original[:, None, :, :], axis=3)
     is_new = ~np.any(same, axis=2)
-    area = np.linalg.norm(
-        np.cross(visible[:, 1] - visible[:, 0], visible[:, 2] - visible[:, 0]), axis=1
-    )
+    kept = drawn(pieces.clip, width, height)
     scale = max(float(np.abs(visible).max()), 1.0) if len(visible) else 1.0
-    kept = area > 1e-12 * scale**2
     new = visible[is_new & kept[:, None]]
     if len(new):  # each point once, though neighbouring pieces share it (to rounding)
         new = new[np.unique(np.round(new / scale, 9), axis=0, return_index=True)[1]]

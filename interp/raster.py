@@ -528,8 +528,7 @@ class _Scan:
 def _scan(pieces: ClippedTriangles, width: int, height: int, depth_bits: int) -> _Scan:
     """Snap, orient and scan-convert the clipped triangles: their row items and planes."""
     window = _viewport(pieces.clip, width, height)
-    X = np.rint(window[..., 0] * SUBPIXELS).astype(np.int64)  # snap to the subpixel grid
-    Y = np.rint(window[..., 1] * SUBPIXELS).astype(np.int64)
+    X, Y = _snap(window)
     area2 = _twice_area(X, Y)
 
     # Both windings are drawn: turn clockwise triangles counter-clockwise, drop degenerate ones.
@@ -615,6 +614,37 @@ def _edge_functions(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarra
     xk, yk = np.roll(x, -2, axis=1), np.roll(y, -2, axis=1)
     A, B = yj - yk, xk - xj
     return A, B, -(A * xj + B * yj)
+
+
+def _snap(window: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Window positions (..., >= 2) snapped to the subpixel grid: integer X and Y."""
+    X = np.rint(window[..., 0] * SUBPIXELS).astype(np.int64)
+    Y = np.rint(window[..., 1] * SUBPIXELS).astype(np.int64)
+    return X, Y
+
+
+def drawn(clip: np.ndarray, width: int, height: int) -> np.ndarray:
+    """Which clipped triangles the rasterizer draws at all: those whose corners, snapped to
+    the subpixel grid, are not in one line (a triangle seen edge-on has no area to cover).
+
+    Parameters
+    ----------
+    clip : (T, 3, 4) array
+        Clip-space corners of triangles already clipped (every ``w > 0``).
+    width, height : int
+        The image size in pixels.
+
+    Returns
+    -------
+    (T,) bool array
+
+    Examples
+    --------
+    >>> flat = np.array([[[-1, 0, 0, 1], [1, 0, 0, 1], [0, 0, 0, 1]]], float)  # one line
+    >>> drawn(np.concatenate([flat, flat + [[0, 0.5, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]]), 4, 4)
+    array([False,  True])
+    """
+    return _twice_area(*_snap(_viewport(clip, width, height))) != 0
 
 
 def _twice_area(x: np.ndarray, y: np.ndarray) -> np.ndarray:

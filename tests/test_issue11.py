@@ -56,7 +56,7 @@ def test_lesson_6_pitch_90_at_distance_3_misses_the_quad():
 def diamonds(height: float) -> Counter:
     """On which planes of the view volume the vertices clipping made lie (lesson 8's camera)."""
     cam = camera(height=height, pitch=15.0, distance=1.0)
-    clipped = frustum.clipped_in_world(interp.ground_plane(cam, LESSON_SIZE, quads=2))
+    clipped = frustum.clipped_in_world(interp.ground_plane(cam, LESSON_SIZE, quads=2), 320, 240)
     x, y, z, w = (
         (np.c_[clipped.new_vertices, np.ones(len(clipped.new_vertices))])
         .dot((cam.projection @ cam.view).T)
@@ -89,7 +89,7 @@ def test_lesson_8_what_the_near_plane_cuts_off_at_the_default_camera():
     assert set("+".join(planes).split("+")) == {"left", "right", "bottom"}
     assert f"{bottom_edge_depth(0.3):.2f} ahead of the eye" in text
     cam = camera(height=0.3, pitch=15.0, distance=1.0)
-    cut = frustum.clipped_in_world(interp.ground_plane(cam, LESSON_SIZE, quads=2)).cut_off
+    cut = frustum.clipped_in_world(interp.ground_plane(cam, LESSON_SIZE, quads=2), 320, 240).cut_off
     depth = -(np.c_[cut.reshape(-1, 3), np.ones(cut.size // 3)] @ cam.view.T)[:, 2]
     assert depth.min() < 0 and np.isclose(depth.max(), cam.near)  # behind the eye, and the strip
 

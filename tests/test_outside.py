@@ -97,7 +97,7 @@ def test_a_pixel_ray_hits_the_quad_exactly_where_the_rasterizer_draws_it(camera)
 def test_clipping_in_world_space(camera):
     camera = camera.fitted(320, 240)
     scene = ground_plane(camera, size=LESSON_SIZE, quads=3)
-    clipped = frustum.clipped_in_world(scene)
+    clipped = frustum.clipped_in_world(scene, 320, 240)
     half = LESSON_SIZE / 2 * (1 + 1e-9)
     for pieces in (clipped.visible, clipped.cut_off, clipped.new_vertices[None]):
         np.testing.assert_allclose(pieces[..., 1], 0.0, atol=1e-9)  # all on the ground
@@ -121,7 +121,7 @@ def test_clipping_in_world_space(camera):
 
 def test_nothing_clipped_nothing_new():
     camera = Camera(height=6.0, pitch=90.0, distance=0.0, fovy=60.0)  # sees all of the quad
-    clipped = frustum.clipped_in_world(ground_plane(camera, size=LESSON_SIZE, quads=2))
+    clipped = frustum.clipped_in_world(ground_plane(camera, size=LESSON_SIZE, quads=2), 320, 240)
     assert len(clipped.new_vertices) == 0 and len(clipped.cut_off) == 0
     assert len(clipped.visible) == clipped.in_view == 8
     assert area(clipped.visible) == pytest.approx(LESSON_SIZE**2)

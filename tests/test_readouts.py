@@ -324,7 +324,12 @@ CHECKS = {
     "approximations": (approximations, [{"roll": 0.0}, {"pitch": -10.0, "height": 4.0}]),
     "outside-view": (
         outside_view,
-        [{"pitch": 90.0}, {"height": -0.5}, {"height": 0.3, "distance": 1.0, "quads": 2}],
+        [
+            {"pitch": 90.0},
+            {"height": -0.5},
+            {"height": 0.3, "distance": 1.0, "quads": 2},
+            {"height": 0.0},  # in the ground's plane: every piece edge-on, none drawn
+        ],
     ),
     "checkerboards-outside": (
         checkerboards_outside,
@@ -332,7 +337,12 @@ CHECKS = {
     ),
     "clipping-outside": (
         clipping_outside,
-        [{"height": 0.05}, {"height": -0.5}, {"distance": 0.0, "pitch": 90.0, "height": 2.0}],
+        [
+            {"height": 0.05},
+            {"height": -0.5},
+            {"distance": 0.0, "pitch": 90.0, "height": 2.0},
+            {"height": 0.0},
+        ],
     ),
     "texture-filtering": (
         texture_filtering,

@@ -272,7 +272,7 @@ class OutsideView(Plot):
         self._set_box(camera.eye)
         self._set_ground(scene, show, quads, frequency)
 
-        clipped = frustum.clipped_in_world(scene)
+        clipped = frustum.clipped_in_world(scene, width, height)
         # The frustum is drawn as far as the camera sees the quad (or to its far corner).
         corners = np.array([[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]]) * LESSON_SIZE / 2
         seen = clipped.visible.reshape(-1, 3) if len(clipped.visible) else corners
