@@ -177,6 +177,9 @@ def shader(p):
         return [f"{behind} corner", f"covers {covered.sum()} pixels", f"{draw['smooth'][1].sum()}"]
     both = covered & draw["smooth"][1]
     from_smooth = np.abs(np.clip(values, 0, 1) - np.clip(draw["smooth"][0], 0, 1))[both].max()
+    beyond = max(values[covered].max() - 1, -values[covered].min())
+    if output == "noperspective" and beyond >= 0.005:
+        return [f"{from_smooth:.2f}", f"run up to {beyond:.2f} past the corners' range"]
     return [f"{from_smooth:.2f}"]
 
 
@@ -318,7 +321,12 @@ CHECKS = {
     "barycentrics": (barycentrics, [{"pitch": 90.0, "distance": 0.0, "height": 2.2}]),
     "shader": (
         shader,
-        [{"output": "flat"}, {"output": "noperspective"}, {"height": 0.3, "distance": 1.0}],
+        [
+            {"output": "flat"},
+            {"output": "noperspective"},
+            {"height": 0.3, "distance": 1.0},
+            {"height": 0.3, "distance": 1.0, "output": "noperspective"},  # corners behind
+        ],
     ),
     "clipping": (clipping, [{"height": -0.5}, {"height": 0.0}, {"distance": 0.0, "near": 0.01}]),
     "approximations": (approximations, [{"roll": 0.0}, {"pitch": -10.0, "height": 4.0}]),

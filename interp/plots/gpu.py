@@ -79,8 +79,9 @@ class ShaderView(Plot):
         self.axes[1].set_title(output.replace(", divided", ",\ndivided"))
 
     def difference_from(self, other: str) -> float:
-        """The largest colour difference between the right panel and ``other`` ("smooth",
-        "noperspective" or "flat", drawn for the same camera), over pixels both cover."""
+        """The largest difference between the colours the right panel shows and those
+        ``other`` ("smooth", "noperspective" or "flat", drawn for the same camera) would show,
+        over pixels both cover; colours are shown clipped to [0, 1] (see :meth:`beyond`)."""
         output = str(self.params["output"])
         values, covered = self.values[output]
         if other == "smooth":
@@ -88,7 +89,21 @@ class ShaderView(Plot):
         else:
             reference, drawn = self._draw(other, False)
         both = covered & drawn
-        return float(np.abs(values - reference)[both].max()) if both.any() else 0.0
+        if not both.any():
+            raise ValueError(f"no pixel shows both {output!r} and {other!r}: nothing to compare")
+        shown = np.abs(np.clip(values, 0, 1) - np.clip(reference, 0, 1))
+        return float(shown[both].max())
+
+    def beyond(self) -> float:
+        """How far the right panel's colours run outside [0, 1], the corners' range (0 if they
+        stay inside). ``smooth`` and ``flat`` never leave it; ``noperspective`` does where
+        clipping cut a triangle that reaches behind the eye: linear on the screen across all of
+        the triangle, its colour runs past the corners' on the part left in view."""
+        values, covered = self.values[str(self.params["output"])]
+        if not covered.any():
+            return 0.0
+        shown = values[covered]
+        return float(max(shown.max() - 1.0, -shown.min(), 0.0))
 
     @property
     def dynamic(self) -> list:

@@ -811,6 +811,14 @@ class Shader(LessonFigure):
         covered = self.view.values[output][1]
         if not covered.any():
             return "Nothing is drawn: the quad is out of view."
+        if output.startswith("smooth") and self.view.behind:
+            corners = "corner is" if self.view.behind == 1 else "corners are"
+            return (
+                f"{self.view.behind} {corners} behind the camera (w < 0): divided before "
+                "clipping could cut them off, they are mirrored through the eye, and the picture "
+                f"covers {int(covered.sum())} pixels where smooth covers "
+                f"{int(self.view.values['smooth'][1].sum())}."
+            )
         from_smooth = self.view.difference_from("smooth")
         if output == "flat":
             return (
@@ -818,19 +826,19 @@ class Shader(LessonFigure):
                 f"last); it differs from smooth by up to {from_smooth:.2f}."
             )
         if output == "noperspective":
-            return f"Noperspective differs from smooth by up to {from_smooth:.2f} here."
-        if self.view.behind == 0:
-            return (
-                "Dividing by w in the vertex shader leaves every w = 1, so smooth has nothing to "
-                "correct with: the picture is noperspective's, up to "
-                f"{from_smooth:.2f} away from smooth."
-            )
-        corners = "corner is" if self.view.behind == 1 else "corners are"
+            text = f"Noperspective differs from smooth by up to {from_smooth:.2f} here."
+            beyond = self.view.beyond()
+            if beyond >= 0.005:
+                text += (
+                    f" Corners behind the camera: linear on the screen across triangles that "
+                    f"reach behind the eye, its colours run up to {beyond:.2f} past the corners' "
+                    "range [0, 1] (drawn clipped)."
+                )
+            return text
         return (
-            f"{self.view.behind} {corners} behind the camera (w < 0): divided before clipping "
-            "could cut them off, they are mirrored through the eye, and the picture covers "
-            f"{int(covered.sum())} pixels where smooth covers "
-            f"{int(self.view.values['smooth'][1].sum())}."
+            "Dividing by w in the vertex shader leaves every w = 1, so smooth has nothing to "
+            "correct with: the picture is noperspective's, up to "
+            f"{from_smooth:.2f} away from smooth."
         )
 
 
