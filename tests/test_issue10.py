@@ -247,3 +247,16 @@ def test_the_span_costs_in_lesson_8_are_what_the_lab_measures():
     assert "about 0.13 divides per pixel for 16-pixel spans" in prose(8)
     rolled_flat = shown("approximations", roll=0.0).readout()
     assert "mean error 0 (to rounding) texels" in rolled_flat
+
+
+def test_with_no_roll_the_lab_plots_no_rounding_errors():
+    """With no roll, depth is constant along each row and spans are exact: their errors are
+    rounding (about 1e-16 texels), which a log axis drew as points fifteen decades down."""
+    lab = shown("approximations", roll=0.0)
+    spans = lab.lab.costs["spans"]
+    assert np.all(spans.mean_error < 1e-9)
+    assert len(lab.lab.spans.get_xdata()) == 0
+    assert lab.lab.ax.get_ylim()[0] >= 1e-9
+    assert lab.lab.ax.get_title() == "spans: exact at every setting here"
+    rolled = shown("approximations", roll=30.0)
+    assert len(rolled.lab.spans.get_xdata()) == 6 and rolled.lab.ax.get_title() == ""

@@ -247,7 +247,9 @@ class ApproximationLab(Plot):
         for note in self.notes.values():
             note.set_visible(False)
         for line, costs in ((self.spans, spans), (self.tessellation, tess)):
-            shown = costs.mean_error > 0  # exact settings (N = 1) have no place on a log axis
+            # Exact settings (N = 1, and every N along rows of constant depth) have no place
+            # on a log axis: their errors are rounding.
+            shown = costs.mean_error >= approximation.EXACT
             x, y, settings = (
                 a[shown] for a in (costs.divides_per_pixel, costs.mean_error, costs.setting)
             )
@@ -258,11 +260,16 @@ class ApproximationLab(Plot):
                 note.set_visible(True)
         xs = np.concatenate([spans.divides_per_pixel, tess.divides_per_pixel])
         ys = np.concatenate([spans.mean_error, tess.mean_error])
-        keep = (xs > 0) & (ys > 0)
+        keep = (xs > 0) & (ys >= approximation.EXACT)
         if keep.any():  # whole decades, with room for the labels: small steps keep them
             self.ax.set_xlim(*_decades(xs[keep].min() / 1.5, xs[keep].max() * 3))
             self.ax.set_ylim(*_decades(ys[keep].min() / 1.5, ys[keep].max() * 1.5))
-            self.ax.set_title("")
+            exact = [
+                name
+                for name, costs in (("spans", spans), ("tessellation", tess))
+                if np.all(costs.mean_error < approximation.EXACT)
+            ]
+            self.ax.set_title(f"{exact[0]}: exact at every setting here" if exact else "")
         else:  # nothing drawn, or nothing to correct: fixed axes, so history cannot show
             self.ax.set_xlim(*self.EMPTY_X)
             self.ax.set_ylim(*self.EMPTY_Y)

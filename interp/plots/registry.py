@@ -19,7 +19,7 @@ import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.figure import Figure, SubFigure
 
-from interp import depth, lerp, mipmap, mistakes
+from interp import approximation, depth, lerp, mipmap, mistakes
 from interp.plots._base import Plot
 from interp.plots.attributes import ClipVertexMistake, ColourTriangle, MistakesAlongALine
 from interp.plots.checker import CheckerPanels, UVImages
@@ -927,9 +927,10 @@ class Approximations(LessonFigure):
     title = "The approximation lab"
     description = "mean texture error against divides per pixel: Quake's spans and tessellation"
     caption = (
-        "Mean texture error against divides per pixel, on log scales, for a rolled camera: "
-        "exact every N pixels along a row (Quake's spans) against cutting the quad into n x n "
-        "affine quads (PlayStation era). (Lesson 8)"
+        "Mean texture error against divides per pixel, on log scales: exact every N pixels "
+        "along a row (Quake's spans) against cutting the quad into n x n affine quads "
+        "(PlayStation era). The camera starts rolled: with no roll, depth is constant along "
+        "each row, spans are exact, and only tessellation is left to plot. (Lesson 8)"
     )
     size = (6.5, 4.6)
     print_size = (NARROW, 3.0)
@@ -949,7 +950,7 @@ class Approximations(LessonFigure):
             return "Nothing is drawn: the plane is out of view."
 
         def texels(error: float) -> str:
-            return "0 (to rounding)" if error < 1e-9 else f"{error:.3g}"
+            return "0 (to rounding)" if error < approximation.EXACT else f"{error:.3g}"
 
         return (
             f"Spans of 16 pixels: mean error {texels(spans.mean_error[span16])} texels at "
