@@ -209,7 +209,7 @@ def chromium(playwright):
 # whenever they differ from the last recorded frame. So a "frame" is a distinct picture as it
 # is about to be painted, at most one per display frame; identical redraws are not counted.
 # Input events (key and pointer) are recorded with their ``timeStamp``, on the same clock, and
-# so is every ``toDataURL`` call (``probe.dataUrls``).
+# so is every ``toDataURL`` call (``probe.dataUrls``; the last URL made is ``probe.lastDataUrl``).
 
 FRAME_PROBE = r"""
 (() => {
@@ -247,8 +247,10 @@ FRAME_PROBE = r"""
   probe.dataUrls = [];
   const toDataURL = HTMLCanvasElement.prototype.toDataURL;
   HTMLCanvasElement.prototype.toDataURL = function (...args) {
+    const url = toDataURL.apply(this, args);
     probe.dataUrls.push(performance.now());
-    return toDataURL.apply(this, args);
+    probe.lastDataUrl = url;
+    return url;
   };
   for (const type of ['keydown', 'pointerdown', 'pointermove', 'pointerup']) {
     window.addEventListener(type, (e) => probe.inputs.push({type, t: e.timeStamp}), true);
