@@ -76,6 +76,7 @@ from browser import (
     show_file_browser,
     shutdown_kernels,
     slider_for,
+    steady_box,
     wait_idle,
     write_all_apps_notebook,
 )
@@ -299,7 +300,7 @@ def bench_slider(page, name: str, count: int, args, label: str) -> dict:
     up = param.default + args.steps * param.step <= param.high
     key = "ArrowRight" if up else "ArrowLeft"
     latencies, misses = step_with_keys(page, handle, canvas, key, args.steps)
-    box = handle.bounding_box()
+    box = steady_box(handle)
     track = slider.locator(".noUi-target").bounding_box()
     centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
     room = min(centre[0] - track["x"], track["x"] + track["width"] - centre[0])

@@ -592,6 +592,20 @@ def endpoint_a(page, count: int) -> tuple[float, float, list[float]]:
     return x, y, box
 
 
+def steady_box(locator, timeout: float = 10.0) -> dict:
+    """``locator``'s bounding box once it has stopped moving (the same in three reads 50 ms
+    apart). After a scroll, JupyterLab renders the cells coming into view and the page can
+    still shift: a mouse press at a box measured too early misses the slider's handle."""
+    deadline = time.monotonic() + timeout
+    boxes = [locator.bounding_box()]
+    while time.monotonic() < deadline:
+        time.sleep(0.05)
+        boxes.append(locator.bounding_box())
+        if boxes[-1] is not None and boxes[-3:] == [boxes[-1]] * 3:
+            break
+    return boxes[-1]
+
+
 def slider_for(root, label: str):
     """The slider of an app whose description is exactly ``label``."""
     label = root.page.get_by_text(label, exact=True)

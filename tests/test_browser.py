@@ -24,6 +24,7 @@ from browser import (
     SCREENSHOTS,
     free_port,
     server,
+    steady_box,
     stop,
     sync_api,
 )
@@ -116,7 +117,7 @@ def slider(page, description: str, scope: str = VISIBLE):
 
 def drag_handle(page, control, dx: float) -> None:
     handle = control.locator(".noUi-handle")
-    box = handle.bounding_box()
+    box = steady_box(handle)
     x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
     page.mouse.move(x, y)
     page.mouse.down()

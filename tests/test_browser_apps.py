@@ -52,6 +52,7 @@ from browser import (
     show_file_browser,
     shutdown_kernel,
     slider_for,
+    steady_box,
     sync_api,
     wait_idle,
     write_all_apps_notebook,
@@ -207,7 +208,7 @@ def assert_no_errors(page) -> None:
 def drag_by(page, locator, dx: float, start=None) -> None:
     """Press on ``locator``'s centre (or ``start``), move ``dx`` px in small steps, let go."""
     if start is None:
-        box = locator.bounding_box()
+        box = steady_box(locator)
         start = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
     x, y = start
     page.mouse.move(x, y)
@@ -227,25 +228,7 @@ def test_kernels_import_this_checkouts_interp(lesson, request):
     assert kernel_interp(page) == ROOT, "the kernels would test another checkout's interp"
 
 
-#: Apps whose slider drag left the figure unchanged in the last CI run and once locally (two
-#: earlier runs of the same code passed): under investigation, so reported, not hidden.
-UNSETTLED = {"linear_on_screen", "shader", "texture_filtering"}
-
-
-@pytest.mark.parametrize(
-    "name",
-    [
-        pytest.param(
-            name,
-            marks=pytest.mark.xfail(
-                reason="drag sometimes leaves the figure unchanged (issue 12)", strict=False
-            ),
-        )
-        if name in UNSETTLED
-        else name
-        for name in APPS
-    ],
-)
+@pytest.mark.parametrize("name", APPS)
 def test_app_appears_and_follows_its_control(lesson, request, name):
     page, counts = lesson(LESSON_OF[name])
     request.node.page_on_show = page
