@@ -1,7 +1,7 @@
 """Making a live ipympl figure answer a slider within a frame or two.
 
 A slider step must reach the screen fast, and a fast drag must not leave a queue of stale frames
-behind it. Three things make that so (measured in the browser by ``make bench-browser``):
+behind it. These things make that so (measured in the browser by ``make bench-browser``):
 
 - **Blitting.** The figure's static parts (axes, ticks, labels, legends, colorbars) are drawn
   once and kept as a background; a step restores it and draws only the artists the figure's
@@ -15,8 +15,10 @@ behind it. Three things make that so (measured in the browser by ``make bench-br
 - **Cheap, whole frames.** Each frame is the whole figure as a PNG written for speed (see
   :func:`png`): no row filters, the fastest zlib level; less than half the time of ipympl's
   default diff frames, and a frame the browser drops can never leave a figure half drawn.
-
-And one thing in the page: **no picture of the picture per frame** (:data:`FRAME_JS`).
+- **Nothing drawn twice.** A blitted figure is marked up to date: with ``%matplotlib widget``
+  pyplot redraws every stale figure after each widget message, and ipympl turns that into a
+  round trip through the browser and a second, full redraw of every step and mouse move.
+- **No picture of the picture per frame**, in the page (:data:`FRAME_JS`).
 
 And one thing makes them right: **drawing takes turns** (:data:`DRAW_LOCK`). ipykernel 7 handles
 widget messages on a subshell thread beside the main one (JupyterLab 4.6 sends comm messages
