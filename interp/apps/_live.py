@@ -69,7 +69,12 @@ FRAME_JS = """
   const container = window._JUPYTERLAB && window._JUPYTERLAB['jupyter-matplotlib'];
   if (!container || window.interpFramesPatched) return;
   window.interpFramesPatched = true;
-  const model = (await container.get('./index'))().MPLCanvasModel;
+  let model;
+  try {
+    model = (await container.get('./index'))().MPLCanvasModel;
+  } catch (error) {
+    return;  // another ipympl: frames stay as it draws them
+  }
   const proto = model && model.prototype;
   if (!proto || !String(proto.handle_binary).includes('toDataURL')) return;
   const handleBinary = proto.handle_binary;
