@@ -303,3 +303,40 @@ def test_a_kept_legend_is_the_legend_drawn_again_with_a_curve_behind_it(monkeypa
         np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
     assert blitter.blits == 7
     assert draws == [], "the legend was drawn again instead of put back"
+
+
+def test_a_title_drawn_as_before_is_put_back_and_a_changed_one_drawn(monkeypatch):
+    """A title above its axes that looks as when last drawn is put back as a picture, not
+    rendered again (matplotlib renders text glyph by glyph: 2-9 ms a title); the frame is still
+    the full redraw, and a title whose text changed is drawn anew."""
+    from matplotlib.text import Text
+
+    with styled():
+        figure = plt.figure(figsize=(4, 2))
+        left, right = figure.subplots(1, 2)
+        (curve,) = left.plot([0, 1], [0, 1])
+        left.set_title("a title that stays")
+        right.set_title("step 0")
+        figure.get_layout_engine().execute(figure)
+        figure.set_layout_engine("none")  # frozen, as in the apps
+    blitter = Blitter(figure, [curve, left.title, right.title])
+    blitter.draw()
+    drawn = []
+    draw = Text.draw
+
+    def counted(self, renderer):
+        drawn.append(self.get_text())
+        return draw(self, renderer)
+
+    for step in range(1, 4):
+        curve.set_ydata([0, 1 - step / 4])
+        right.set_title(f"step {step}")
+        monkeypatch.setattr(Text, "draw", counted)
+        blitter.draw()
+        monkeypatch.setattr(Text, "draw", draw)
+        blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
+        figure.canvas.draw()
+        np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
+    assert blitter.blits == 3
+    assert "a title that stays" not in drawn
+    assert [t for t in drawn if t.startswith("step")] == ["step 1", "step 2", "step 3"]

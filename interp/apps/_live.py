@@ -158,7 +158,8 @@ class Blitter:
     (spines, legends), in the order a full draw uses; the background is everything else. So a
     blitted frame matches a full redraw. An opaque legend among them is drawn once; after that
     the blit draws only its box and puts back the picture of its inside (see
-    :meth:`_draw_legend`).
+    :meth:`_draw_legend`); a title drawn as it was last time is put back the same way (see
+    :meth:`_draw_title`).
     """
 
     def __init__(self, figure: Figure, dynamic: list[Artist] | None) -> None:
@@ -169,6 +170,9 @@ class Blitter:
         self.layers: list[Artist] = []
         #: The inside of each opaque legend among the layers, as drawn: id -> saved region.
         self.legends: dict[int, object] = {}
+        #: Each title among the layers as last drawn: id -> (what it looked like, region).
+        self.titles: dict[int, tuple[tuple, object]] = {}
+        self._title_ids: set[int] = set()
         self.full_draws = self.blits = 0
 
     def draw(self) -> None:
@@ -189,6 +193,8 @@ class Blitter:
         for artist in self.layers:
             if isinstance(artist, Legend) and _opaque(artist):
                 self._draw_legend(artist)
+            elif id(artist) in self._title_ids:
+                self._draw_title(artist)
             else:
                 self.figure.draw_artist(artist)
         canvas.blit(self.figure.bbox)
@@ -218,10 +224,61 @@ class Blitter:
         if inside.width > 0 and inside.height > 0:
             self.legends[id(legend)] = self.figure.canvas.copy_from_bbox(inside)
 
+    def _draw_title(self, title: Text) -> None:
+        """Draw an axes title, or put back its picture when it looks as when last drawn.
+
+        A title sits above its axes, where nothing but the background is behind it; so if its
+        text, place, size and colour are the same as last time, and its box (two pixels wider
+        all round) meets no axes and no other title, the saved picture of that box is what
+        drawing it would give. Many titles change only with some of the controls (the mode,
+        not the camera); their glyphs are then not rendered again on every step."""
+        renderer = self.figure.canvas.get_renderer()
+        extent = title.get_window_extent(renderer)
+        look = (
+            title.get_text(),
+            tuple(extent.bounds),
+            title.get_color(),
+            title.get_alpha(),
+            hash(title.get_fontproperties()),
+            title.get_rotation(),
+            title.get_visible(),
+        )
+        box = Bbox.from_extents(
+            math.floor(extent.x0) - 2,
+            math.floor(extent.y0) - 2,
+            math.ceil(extent.x1) + 2,
+            math.ceil(extent.y1) + 2,
+        )
+        if not title.get_text() or not self._alone(title, box, renderer):
+            self.figure.draw_artist(title)
+            return
+        kept = self.titles.get(id(title))
+        if kept is not None and kept[0] == look:
+            self.figure.canvas.restore_region(kept[1])
+            return
+        self.figure.draw_artist(title)
+        self.titles[id(title)] = (look, self.figure.canvas.copy_from_bbox(box))
+
+    def _alone(self, title: Text, box: Bbox, renderer: object) -> bool:
+        """Whether ``box`` (around ``title``) meets no axes and no other title drawn."""
+        if any(ax.bbox.overlaps(box) for ax in self.figure.axes):
+            return False
+        return not any(
+            other is not title
+            and other.get_text()
+            and other.get_window_extent(renderer).overlaps(box)
+            for other in self.layers
+            if id(other) in self._title_ids
+        )
+
     def _capture_background(self) -> None:
         """Render everything but the layers a blit draws, and keep that picture."""
         self.legends = {}
+        self.titles = {}
         self.layers = self._layers()
+        self._title_ids = {
+            id(t) for ax in self.figure.axes for t in (ax.title, ax._left_title, ax._right_title)
+        }
         shown = [(a, a.get_visible()) for a in self.layers]
         # A hidden title has no extent, and matplotlib would then lift it off the axes: keep
         # where the titles are.
