@@ -209,7 +209,7 @@ def chromium(playwright):
 # whenever they differ from the last recorded frame. So a "frame" is a distinct picture as it
 # is about to be painted, at most one per display frame; identical redraws are not counted.
 # Input events (key and pointer) are recorded with their ``timeStamp``, on the same clock, and
-# so is every ``toDataURL`` call (``probe.dataUrls``; the last URL made is ``probe.lastDataUrl``).
+# so is every ``toDataURL`` call, with the URL it made (``probe.dataUrls``, the last 40).
 
 FRAME_PROBE = r"""
 (() => {
@@ -248,8 +248,8 @@ FRAME_PROBE = r"""
   const toDataURL = HTMLCanvasElement.prototype.toDataURL;
   HTMLCanvasElement.prototype.toDataURL = function (...args) {
     const url = toDataURL.apply(this, args);
-    probe.dataUrls.push(performance.now());
-    probe.lastDataUrl = url;
+    probe.dataUrls.push({t: performance.now(), url});
+    if (probe.dataUrls.length > 40) probe.dataUrls.shift();
     return url;
   };
   for (const type of ['keydown', 'pointerdown', 'pointermove', 'pointerup']) {

@@ -321,16 +321,17 @@ def test_frames_are_not_encoded_again_until_they_stop(lesson, request):
     frames = page.evaluate(
         "([c, a]) => window.__probe.of(c).filter(f => f.t > a).map(f => f.t)", [canvas, start]
     )
-    encoded = page.evaluate("a => window.__probe.dataUrls.filter(t => t > a)", start)
-    last_encoded = page.evaluate("() => window.__probe.lastDataUrl")
+    encoded = page.evaluate("a => window.__probe.dataUrls.filter(e => e.t > a)", start)
     on_show = canvas.evaluate("c => c.toDataURL()")  # the view's canvas: the same pixels
     assert len(frames) >= 4, f"only {len(frames)} pictures while dragging"
     pauses = sum(later - earlier > 250 for earlier, later in itertools.pairwise(frames))
-    while_coming = [t for t in encoded if frames[0] <= t <= frames[-1]]
+    while_coming = [e for e in encoded if frames[0] <= e["t"] <= frames[-1]]
     assert len(while_coming) <= 1 + pauses, (
         f"{len(while_coming)} pictures encoded during {len(frames)} frames with {pauses} pauses"
     )
-    assert last_encoded == on_show, "the picture encoded last is not the one on show"
+    # (Other figures on the page may encode theirs meanwhile.)
+    after = [e["url"] for e in encoded if e["t"] > frames[-1]]
+    assert on_show in after, "the picture on show was not encoded once the frames stopped"
 
 
 @pytest.mark.parametrize("notebook", FLAKY_LESSONS)
