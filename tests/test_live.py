@@ -226,7 +226,7 @@ def test_a_blitted_step_leaves_nothing_for_pyplot_to_redraw(monkeypatch):
 
     app = apps.st_mapping()
     monkeypatch.setattr(apps.App, "live", property(lambda self: True))  # blit, as with ipympl
-    app.refresh()
+    app.figure.canvas.draw()  # as the browser's first frame does
     requests = []
     monkeypatch.setattr(app.figure.canvas, "draw_idle", lambda *a, **k: requests.append(1))
     for w2 in (5.0, 6.0):
@@ -340,3 +340,55 @@ def test_a_title_drawn_as_before_is_put_back_and_a_changed_one_drawn(monkeypatch
     assert blitter.blits == 3
     assert "a title that stays" not in drawn
     assert [t for t in drawn if t.startswith("step")] == ["step 1", "step 2", "step 3"]
+
+
+def test_a_change_made_from_a_cell_still_gets_pyplots_full_redraw(monkeypatch):
+    """A cell that changes the figure itself (a label) and then moves a control: the blit's
+    background does not know the label, so pyplot's full redraw after the cell must come."""
+    from matplotlib._pylab_helpers import Gcf
+
+    app = apps.st_mapping()
+    monkeypatch.setattr(apps.App, "live", property(lambda self: True))
+    app.figure.canvas.draw()
+    requests = []
+    monkeypatch.setattr(app.figure.canvas, "draw_idle", lambda *a, **k: requests.append(1))
+    app.figure.axes[0].set_xlabel("a label of the teacher's")
+    app.set(w2=5.0)
+    Gcf.draw_all()
+    assert requests == [1]
+
+
+def test_a_label_reaching_into_a_kept_titles_box_is_drawn():
+    """Lesson 2's title depends on the depths only; with A high up (x = 4.5) its label reaches
+    into the title's box: putting back the title's picture erased the label's tip."""
+    app = apps.projecting_a_line()
+    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter.draw()
+    for x in (4.5, 4.0, 0.0, 4.5):
+        app.set(A_x=x)
+        blitter.draw()
+        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
+        app.figure.canvas.draw()
+        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
+    assert blitter.blits == 4
+
+
+def test_a_legend_placed_best_moves_with_the_curves():
+    """``loc="best"`` (matplotlib's default) moves a legend away from the curves as they
+    move: such a legend is drawn on every blit, not kept."""
+    with styled():
+        figure = plt.figure(figsize=(3, 2))
+        ax = figure.add_subplot()
+        (curve,) = ax.plot([0, 1], [0.9, 0.9], label="a curve")
+        ax.legend()
+        ax.set_xlim(0, 1)
+        ax.set_ylim(0, 1)
+    blitter = Blitter(figure, [curve])
+    blitter.draw()
+    for y in (0.1, 0.5, 0.9):
+        curve.set_ydata([y, y])
+        blitter.draw()
+        blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
+        figure.canvas.draw()
+        np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
+    assert blitter.legends == {}

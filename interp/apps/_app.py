@@ -179,10 +179,14 @@ class App:
     def refresh(self) -> None:
         """Draw with the controls' values and show the result."""
         with DRAW_LOCK:  # a slider's thread, ipympl's and a cell's take turns
+            # Stale before the update: a cell changed the figure itself (a label, say), which
+            # the blit's background does not know; then pyplot's full redraw must still come.
+            changed_outside = self.figure.stale
             with styled(**self._style):  # titles set now must look like those set at the start
                 self.plot.update(**self.values)
             if self.live:
                 self.blitter.draw()  # at once: no round trip through the browser first
+                self.figure.stale = changed_outside
             elif self._handle is not None:
                 self._handle.update(self.figure, metadata=self._image_metadata())
             self.readout.value = self._readout_html()

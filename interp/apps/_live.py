@@ -8,16 +8,20 @@ behind it. These things make that so (measured in the browser by ``make bench-br
   plots change (:attr:`interp.plots.LessonFigure.dynamic`), which is a fraction of a full
   redraw. A legend drawn above changing curves is kept as a picture too (it is opaque), and
   put back instead of being laid out and drawn again: that was a third of a step in the 1D
-  apps. A change of axis limits, legend or size is noticed and redraws everything once.
+  apps; so is a title that looks as it did last time (text is costly to render). A change of
+  axis limits, legend or size is noticed and redraws everything once.
 - **Latest value wins.** A slider change only marks the figure out of date; the drawing happens
   once the kernel has taken in the messages already waiting, with the newest values. A drag
   never builds a backlog, and the last value is always drawn.
 - **Cheap, whole frames.** Each frame is the whole figure as a PNG written for speed (see
   :func:`png`): no row filters, the fastest zlib level; less than half the time of ipympl's
   default diff frames, and a frame the browser drops can never leave a figure half drawn.
-- **Nothing drawn twice.** A blitted figure is marked up to date: with ``%matplotlib widget``
-  pyplot redraws every stale figure after each widget message, and ipympl turns that into a
-  round trip through the browser and a second, full redraw of every step and mouse move.
+- **Nothing drawn twice.** pyplot redraws a figure when it changes, in two ways: at once,
+  through the figure's ``stale_callback`` (the apps remove it), and, with ``%matplotlib
+  widget``, after each widget message, for every figure still marked stale. So a blitted
+  figure is marked up to date (unless it was changed from outside, see ``App.refresh``);
+  ipympl turned each of those redraws into a round trip through the browser and a second,
+  full redraw of every step and mouse move.
 - **No picture of the picture per frame**, in the page (:data:`FRAME_JS`).
 
 And one thing makes them right: **drawing takes turns** (:data:`DRAW_LOCK`). ipykernel 7 handles
@@ -191,7 +195,7 @@ class Blitter:
             canvas.restore_region(self.background)
             self.blits += 1
         for artist in self.layers:
-            if isinstance(artist, Legend) and _opaque(artist):
+            if isinstance(artist, Legend) and self._keeps(artist):
                 self._draw_legend(artist)
             elif id(artist) in self._title_ids:
                 self._draw_title(artist)
@@ -203,6 +207,16 @@ class Blitter:
         # widget message the kernel handles: every slider step and mouse move then cost a
         # second, full redraw, asked for by the browser, and a drag left seconds of them queued.
         self.figure.stale = False
+
+    def _keeps(self, legend: Legend) -> bool:
+        """Whether a legend can be kept as a picture: opaque, static, and fixed in place (not
+        ``loc="best"``, which moves it as the curves move, and not draggable)."""
+        return (
+            _opaque(legend)
+            and legend._loc != 0  # "best"
+            and legend.get_draggable() is False
+            and id(legend) not in {id(a) for a in self.dynamic or ()}
+        )
 
     def _draw_legend(self, legend: Legend) -> None:
         """Draw a static, opaque legend: whole the first time, keeping the picture of its
@@ -227,11 +241,19 @@ class Blitter:
     def _draw_title(self, title: Text) -> None:
         """Draw an axes title, or put back its picture when it looks as when last drawn.
 
-        A title sits above its axes, where nothing but the background is behind it; so if its
-        text, place, size and colour are the same as last time, and its box (two pixels wider
-        all round) meets no axes and no other title, the saved picture of that box is what
+        A title sits above its axes; if its box (two pixels wider all round) meets no axes and
+        nothing else the blit draws, only the background is behind it, and if its text, place,
+        size and colour are the same as last time, the saved picture of that box is what
         drawing it would give. Many titles change only with some of the controls (the mode,
         not the camera); their glyphs are then not rendered again on every step."""
+        if (
+            not title.get_visible()
+            or not title.get_text()
+            or title.get_bbox_patch() is not None
+            or title.get_path_effects()
+        ):
+            self.figure.draw_artist(title)
+            return
         renderer = self.figure.canvas.get_renderer()
         extent = title.get_window_extent(renderer)
         look = (
@@ -241,7 +263,8 @@ class Blitter:
             title.get_alpha(),
             hash(title.get_fontproperties()),
             title.get_rotation(),
-            title.get_visible(),
+            title.get_antialiased(),
+            title.get_usetex(),
         )
         box = Bbox.from_extents(
             math.floor(extent.x0) - 2,
@@ -249,7 +272,7 @@ class Blitter:
             math.ceil(extent.x1) + 2,
             math.ceil(extent.y1) + 2,
         )
-        if not title.get_text() or not self._alone(title, box, renderer):
+        if not self._alone(title, box, renderer):
             self.figure.draw_artist(title)
             return
         kept = self.titles.get(id(title))
@@ -260,16 +283,21 @@ class Blitter:
         self.titles[id(title)] = (look, self.figure.canvas.copy_from_bbox(box))
 
     def _alone(self, title: Text, box: Bbox, renderer: object) -> bool:
-        """Whether ``box`` (around ``title``) meets no axes and no other title drawn."""
+        """Whether ``box`` (around ``title``) meets no axes and nothing else the blit draws: an
+        artist clipped to its axes stays inside them; any other (a label, an annotation, a
+        legend) may reach up into a title's box, where the saved picture would erase it."""
         if any(ax.bbox.overlaps(box) for ax in self.figure.axes):
             return False
-        return not any(
-            other is not title
-            and other.get_text()
-            and other.get_window_extent(renderer).overlaps(box)
-            for other in self.layers
-            if id(other) in self._title_ids
-        )
+        for other in self.layers:
+            if other is title or not other.get_visible():
+                continue
+            if other.get_clip_on() and other.get_clip_box() is not None:
+                reach = other.get_clip_box()
+            else:
+                reach = other.get_window_extent(renderer)
+            if reach.width > 0 and reach.height > 0 and reach.overlaps(box):
+                return False
+        return True
 
     def _capture_background(self) -> None:
         """Render everything but the layers a blit draws, and keep that picture."""
@@ -394,6 +422,10 @@ def png(rgba: np.ndarray, level: int = PNG_LEVEL) -> bytes:
     >>> picture.mode, picture.size, picture.getpixel((2, 1))
     ('RGBA', (3, 2), (255, 0, 0, 255))
     """
+    if rgba.dtype != np.uint8 or rgba.ndim != 3 or rgba.shape[2] != 4:
+        raise ValueError(
+            f"rgba must be an (height, width, 4) array of uint8, got {rgba.dtype} {rgba.shape}"
+        )
     height, width, _ = rgba.shape
     rows = np.empty((height, 1 + 4 * width), np.uint8)
     rows[:, 0] = 0  # filter type None

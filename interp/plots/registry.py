@@ -819,7 +819,10 @@ class Shader(LessonFigure):
                 f"covers {int(covered.sum())} pixels where smooth covers "
                 f"{int(self.view.values['smooth'][1].sum())}."
             )
-        from_smooth = self.view.difference_from("smooth")
+        try:
+            from_smooth = self.view.difference_from("smooth")
+        except ValueError:  # a sliver at the edge of the view, drawn by one side only
+            return "The two panels draw no pixel in common to compare."
         if output == "flat":
             return (
                 "Flat: every pixel of a triangle takes the colour of its provoking vertex (the "
