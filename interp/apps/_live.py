@@ -169,6 +169,7 @@ class Blitter:
     def __init__(self, figure: Figure, dynamic: list[Artist] | None) -> None:
         self.figure = figure
         self.dynamic = dynamic
+        self._dynamic_ids = {id(a) for a in dynamic or ()}
         self.background = None
         self.key: tuple | None = None
         self.layers: list[Artist] = []
@@ -215,7 +216,7 @@ class Blitter:
             _opaque(legend)
             and legend._loc != 0  # "best"
             and legend.get_draggable() is False
-            and id(legend) not in {id(a) for a in self.dynamic or ()}
+            and id(legend) not in self._dynamic_ids
         )
 
     def _draw_legend(self, legend: Legend) -> None:
@@ -329,7 +330,7 @@ class Blitter:
         objects themselves (ticks, tick labels) are left in the background: the style puts
         ticks outside the axes, where no clipped artist reaches.
         """
-        dynamic = {id(a) for a in self.dynamic}
+        dynamic = self._dynamic_ids
         layers: list[Artist] = []
         for ax in self.figure.axes:
             children = ax.get_children()
