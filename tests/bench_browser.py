@@ -318,7 +318,7 @@ def bench_endpoint(page, name: str, count: int, args, label: str) -> dict:
     canvas_locator = figure_canvas(root)
     canvas_locator.scroll_into_view_if_needed()
     canvas = canvas_locator.element_handle()
-    box = canvas_locator.bounding_box()
+    box = steady_box(canvas_locator)
     ax, ay, axes = endpoint_a(page, count)
     start = (box["x"] + ax, box["y"] + ay)
     latencies, misses = step_with_mouse(page, start, 3.0, canvas, args.steps)

@@ -177,7 +177,7 @@ def test_dragging_an_endpoint_moves_the_linked_panels(lab, page):
     height = app.figure.bbox.height
     target_w, target_x = 5.0, 3.0
     tx, ty = app.plot.view.ax.transData.transform((target_w, target_x))
-    box = canvas.bounding_box()
+    box = steady_box(canvas)
     readout = slider(page, "A: depth w").locator(".widget-readout")
     start = readout.inner_text()
     page.mouse.move(box["x"] + px, box["y"] + height - py)

@@ -287,7 +287,7 @@ def test_dragging_endpoint_a_moves_the_figure(lesson, request, name):
     canvas.scroll_into_view_if_needed()
     before = assert_is_the_apps_figure(page, canvas, counts[name], "before dragging A")
     shown_before = canvas_pixels(canvas)
-    box = canvas.bounding_box()
+    box = steady_box(canvas)
     ax, ay, axes = endpoint_a(page, counts[name])
     dx = 40 if ax + 40 < axes[0] + axes[2] else -40
     drag_by(page, canvas, dx, start=(box["x"] + ax, box["y"] + ay))
@@ -401,19 +401,12 @@ def lab_at(page, width: int, height: int) -> None:
 
 
 @pytest.mark.parametrize("name", APPS)
-def test_fits_jupyterlab_1280x800_with_the_file_browser(lesson, request, name):
+@pytest.mark.parametrize("size", [(1280, 800), (1920, 1080)], ids=["1280x800", "1920x1080"])
+def test_fits_jupyterlab_with_the_file_browser(lesson, request, name, size):
     page, _ = lesson(LESSON_OF[name])
     request.node.page_on_show = page
-    lab_at(page, 1280, 800)
-    assert_fits(app_root(page, name), "JupyterLab at 1280x800, file browser open")
-
-
-@pytest.mark.parametrize("name", APPS)
-def test_fits_jupyterlab_1920x1080_with_the_file_browser(lesson, request, name):
-    page, _ = lesson(LESSON_OF[name])
-    request.node.page_on_show = page
-    lab_at(page, 1920, 1080)
-    assert_fits(app_root(page, name), "JupyterLab at 1920x1080, file browser open")
+    lab_at(page, *size)
+    assert_fits(app_root(page, name), f"JupyterLab at {size[0]}x{size[1]}, file browser open")
 
 
 @pytest.fixture(scope="module")

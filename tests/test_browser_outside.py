@@ -10,7 +10,7 @@ import time
 
 import numpy as np
 import pytest
-from browser import server
+from browser import server, steady_box
 from test_browser import (  # noqa: F401 - fixtures
     assert_no_errors,
     drag_handle,
@@ -105,7 +105,7 @@ def test_the_mouse_orbits_the_outside_view(lab, page):  # noqa: F811
     canvas = open_and_run(page, lab, NOTEBOOKS[1])
     canvas.scroll_into_view_if_needed()
     before = wait_until_drawn(canvas)
-    box = canvas.bounding_box()
+    box = steady_box(canvas)
     rows, columns = where["outside"]
     x = box["x"] + (columns.start + columns.stop) / 2
     y = box["y"] + (rows.start + rows.stop) / 2

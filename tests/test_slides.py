@@ -15,7 +15,7 @@ import time
 import nbformat
 import numpy as np
 import pytest
-from browser import ARTIFACTS, ROOT, free_port, stop
+from browser import ARTIFACTS, ROOT, free_port, steady_box, stop
 from browser import _wait_for as wait_for_server
 from PIL import Image
 
@@ -182,7 +182,7 @@ def test_the_deck_opens_advances_and_a_slider_moves_the_figure(slides_server, br
         readout = control.locator(".widget-readout")
         start = readout.inner_text()
         handle = control.locator(".noUi-handle")
-        box = handle.bounding_box()
+        box = steady_box(handle)
         x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
         page.mouse.move(x, y)
         page.mouse.down()
