@@ -185,3 +185,19 @@ def test_lesson_9_affine_lambda():
     assert f"({contrast[0]:.2f} from grey on average, against {contrast[1]:.2f}" in text
     assert np.abs(right.trilinear[far] - 0.5).max() < 1e-12  # uniformly grey, to rounding
     assert f"({np.abs(affine.trilinear[far] - 0.5).mean():.2f} from grey on average)" in text
+
+
+def test_lesson_8_the_clipping_count_between_the_two_near_settings():
+    """The answer quotes the count at near 0.1, 0.01 and in between; 8 only at the slider's
+    stop that shows 0.014 (10**-1.85), not at 0.014 itself."""
+
+    def pieces(near):
+        view = shown("clipping-outside", height=0.05, distance=0.0, near=near).view
+        return view.counts["visible triangles"], view.counts["pieces"]
+
+    assert pieces(0.1) == pieces(0.01) == (3, 7)
+    assert pieces(0.05)[1] == pieces(0.02)[1] == 9
+    assert pieces(10**-1.85)[1] == 8 and f"{10**-1.85:.3f}" == "0.014"
+    text = answers(8)
+    assert "3 triangles becoming 7 at both settings" in text
+    assert "9 at near 0.05 or 0.02, 8 where the slider shows 0.014" in text

@@ -852,8 +852,9 @@ class Clipping(LessonFigure):
     description = "the ground plane from just above it, with the outline of every clipped triangle"
     caption = (
         "With the camera just above the ground and over it, some triangles reach behind it; "
-        "clipping in clip space cuts them at the near plane into the outlined pieces, and the "
-        "image stays correct. (Lesson 8)"
+        "clipping in clip space cuts them against the planes of the view volume (the near "
+        "plane, and the sides where they cross first) into the outlined pieces, and the image "
+        "stays correct. (Lesson 8)"
     )
     size = (6.5, 5.0)
     print_size = (NARROW, 2.6)
