@@ -109,24 +109,21 @@ def lines(repeat: int) -> list[str]:
             f"{t['blit']:5.1f}; CPU {t['cpu']:5.1f}); PNG frame {t['frame']:5.1f} ms"
         )
         if "+" in label:
-            base = ms[label.split(" +")[0]]
-            added, added_cpu = t["step"] - base["step"], t["cpu"] - base["cpu"]
-            verdict = "ok" if added <= ADDED_TARGET_MS else "over"
             line += (
-                f"\n{'':29s} adds {added:+5.1f} ms (CPU {added_cpu:+5.1f}) to the step without "
-                f"it (target {ADDED_TARGET_MS:.0f}: {verdict}); the outside view's own redraw "
-                f"{t['own']:4.1f} ms"
+                f"\n{'':29s} adds {_added(t, ms[label.split(' +')[0]])} to the step without it; "
+                f"the outside view's own redraw {t['own']:4.1f} ms"
             )
         if label == "texture filtering":  # a new app: beside lesson 6's, whose filter it teaches
-            base = ms["checkerboards"]
-            added, added_cpu = t["step"] - base["step"], t["cpu"] - base["cpu"]
-            verdict = "ok" if added <= ADDED_TARGET_MS else "over"
-            line += (
-                f"\n{'':29s} {added:+5.1f} ms (CPU {added_cpu:+5.1f}) against the checkerboard "
-                f"app's step (target {ADDED_TARGET_MS:.0f}: {verdict})"
-            )
+            line += f"\n{'':29s} {_added(t, ms['checkerboards'])} against the checkerboard app"
         out.append(line)
     return out
+
+
+def _added(times: dict[str, float], base: dict[str, float]) -> str:
+    """What one app's step costs more than another's, against :data:`ADDED_TARGET_MS`."""
+    added, added_cpu = times["step"] - base["step"], times["cpu"] - base["cpu"]
+    verdict = "ok" if added <= ADDED_TARGET_MS else "over"
+    return f"{added:+5.1f} ms (CPU {added_cpu:+5.1f}; target {ADDED_TARGET_MS:.0f}: {verdict})"
 
 
 def main(argv: list[str] | None = None) -> None:
