@@ -123,6 +123,7 @@ def test_lesson_9_the_shimmer():
             found.append(np.abs(getattr(views[a], name) - getattr(views[b], name))[far].mean())
     # in the order of the steps the text names (10 to 10.5, then 10.5 to 11)
     assert "(0.51 and 0.49, on a scale" in text
+    assert "whose $\\lambda$ is above 3 at both settings change" in text
     assert [f"{c:.2f}" for c in changes["nearest"]] == ["0.51", "0.49"]
     assert [f"{c:.2f}" for c in changes["box"]] == ["0.04", "0.05"]
     assert "change by 0.04 and 0.05" in text and max(changes["trilinear"]) < 1e-12  # rounding
