@@ -209,7 +209,8 @@ def chromium(playwright):
 # whenever they differ from the last recorded frame. So a "frame" is a distinct picture as it
 # is about to be painted, at most one per display frame; identical redraws are not counted.
 # Input events (key and pointer) are recorded with their ``timeStamp``, on the same clock, and
-# so is every ``toDataURL`` call, with the URL it made (``probe.dataUrls``, the last 40).
+# so is every ``toDataURL`` call, with the URL it made and whether ipympl's frame handler made
+# it (``probe.dataUrls``, the last 40).
 
 FRAME_PROBE = r"""
 (() => {
@@ -248,7 +249,9 @@ FRAME_PROBE = r"""
   const toDataURL = HTMLCanvasElement.prototype.toDataURL;
   HTMLCanvasElement.prototype.toDataURL = function (...args) {
     const url = toDataURL.apply(this, args);
-    probe.dataUrls.push({t: performance.now(), url});
+    // Called from within ipympl's handler of a new frame (its model's handle_binary)?
+    const inFrame = /handle_binary/.test(new Error().stack || '');
+    probe.dataUrls.push({t: performance.now(), url, inFrame});
     if (probe.dataUrls.length > 40) probe.dataUrls.shift();
     return url;
   };
