@@ -342,6 +342,28 @@ def test_a_title_drawn_as_before_is_put_back_and_a_changed_one_drawn(monkeypatch
     assert [t for t in drawn if t.startswith("step")] == ["step 1", "step 2", "step 3"]
 
 
+def test_a_title_changing_on_every_step_is_not_checked_for_keeping(monkeypatch):
+    """Lesson 1's title quotes s, so it changes on every step: the check that a title's box is
+    free (which measures every label the blit draws, 8 ms a step there) is only worth doing
+    for a title that stayed the same; the frames are still the full redraws."""
+    app = apps.the_problem()
+    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter.draw()
+    checks = []
+    alone = Blitter._alone
+    monkeypatch.setattr(
+        Blitter, "_alone", lambda self, *a: (checks.append(a[0].get_text()), alone(self, *a))[1]
+    )
+    for step, w in enumerate((2.5, 3.0, 3.5, 4.0)):  # the title quotes s, which moves with w_A
+        app.set(A_w=w)
+        blitter.draw()
+        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
+        app.figure.canvas.draw()
+        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
+        assert checks == [], f"step {step}: the changed title's box was checked"
+    assert blitter.blits == 4
+
+
 def test_a_change_made_from_a_cell_still_gets_pyplots_full_redraw(monkeypatch):
     """A cell that changes the figure itself (a label) and then moves a control: the blit's
     background does not know the label, so pyplot's full redraw after the cell must come."""

@@ -178,6 +178,10 @@ class Blitter:
         #: Each title among the layers as last drawn: id -> (what it looked like, region).
         self.titles: dict[int, tuple[tuple, object]] = {}
         self._title_ids: set[int] = set()
+        #: Where each static layer reaches on the canvas, measured once per background.
+        self._reach: dict[int, Bbox] = {}
+        #: Where each changing layer reaches, measured once per frame.
+        self._reach_now: dict[int, Bbox] = {}
         self.full_draws = self.blits = 0
 
     def draw(self) -> None:
@@ -195,6 +199,7 @@ class Blitter:
         else:
             canvas.restore_region(self.background)
             self.blits += 1
+        self._reach_now = {}
         for artist in self.layers:
             if isinstance(artist, Legend) and self._keeps(artist):
                 self._draw_legend(artist)
@@ -246,7 +251,9 @@ class Blitter:
         nothing else the blit draws, only the background is behind it, and if its text, place,
         size and colour are the same as last time, the saved picture of that box is what
         drawing it would give. Many titles change only with some of the controls (the mode,
-        not the camera); their glyphs are then not rendered again on every step."""
+        not the camera); their glyphs are then not rendered again on every step. A title that
+        changed since the last step is drawn and not kept: one that changes on every step (it
+        quotes a slider's value) would only pay for the check that its box is free."""
         if (
             not title.get_visible()
             or not title.get_text()
@@ -267,6 +274,11 @@ class Blitter:
             title.get_antialiased(),
             title.get_usetex(),
         )
+        last, kept = self.titles.get(id(title), (None, None))
+        if last is not None and last != look:  # changed since the last step: may change again
+            self.figure.draw_artist(title)
+            self.titles[id(title)] = (look, None)
+            return
         box = Bbox.from_extents(
             math.floor(extent.x0) - 2,
             math.floor(extent.y0) - 2,
@@ -275,27 +287,32 @@ class Blitter:
         )
         if not self._alone(title, box, renderer):
             self.figure.draw_artist(title)
-            return
-        kept = self.titles.get(id(title))
-        if kept is not None and kept[0] == look:
-            self.figure.canvas.restore_region(kept[1])
-            return
-        self.figure.draw_artist(title)
-        self.titles[id(title)] = (look, self.figure.canvas.copy_from_bbox(box))
+        elif kept is not None:
+            self.figure.canvas.restore_region(kept)  # the same look, so the same picture
+        else:
+            self.figure.draw_artist(title)
+            self.titles[id(title)] = (look, self.figure.canvas.copy_from_bbox(box))
 
     def _alone(self, title: Text, box: Bbox, renderer: object) -> bool:
         """Whether ``box`` (around ``title``) meets no axes and nothing else the blit draws: an
         artist clipped to its axes stays inside them; any other (a label, an annotation, a
-        legend) may reach up into a title's box, where the saved picture would erase it."""
+        legend) may reach up into a title's box, where the saved picture would erase it.
+        Where a static artist reaches (a spine, a legend) is measured once per background."""
         if any(ax.bbox.overlaps(box) for ax in self.figure.axes):
             return False
         for other in self.layers:
             if other is title or not other.get_visible():
                 continue
-            if other.get_clip_on() and other.get_clip_box() is not None:
-                reach = other.get_clip_box()
-            else:
-                reach = other.get_window_extent(renderer)
+            reach = self._reach.get(id(other), self._reach_now.get(id(other)))
+            if reach is None:
+                if other.get_clip_on() and other.get_clip_box() is not None:
+                    reach = other.get_clip_box()
+                else:
+                    reach = other.get_window_extent(renderer)
+                if id(other) not in self._dynamic_ids and id(other) not in self._title_ids:
+                    self._reach[id(other)] = reach  # for as long as the background is kept
+                else:
+                    self._reach_now[id(other)] = reach  # for this frame
             if reach.width > 0 and reach.height > 0 and reach.overlaps(box):
                 return False
         return True
@@ -304,6 +321,7 @@ class Blitter:
         """Render everything but the layers a blit draws, and keep that picture."""
         self.legends = {}
         self.titles = {}
+        self._reach = {}
         self.layers = self._layers()
         self._title_ids = {
             id(t) for ax in self.figure.axes for t in (ax.title, ax._left_title, ax._right_title)
