@@ -9,7 +9,9 @@ class opening the app, would leave a kernel for every page ever opened, about 13
   seconds, checking every ``--interval`` seconds;
 - caps the live kernels at ``--max-kernels``: when a new page would pass the cap, the kernel
   idle longest with no page connected is shut down to make room; if every kernel has a page
-  open, the new page gets "503: the server is full" instead of exhausting the machine.
+  open, the new page gets "503: the server is full" instead of exhausting the machine;
+- sends kernel messages to the pages without delay (:func:`interp.server.send_at_once`: Voilà
+  loads no server extensions of its own accord).
 
 Usage: ``python -m interp.classroom [--idle S] [--interval S] [--max-kernels N] [PATH]``; other
 arguments go to Voilà unchanged.
@@ -26,6 +28,8 @@ from jupyter_server.services.kernels.kernelmanager import AsyncMappingKernelMana
 from tornado import web
 from traitlets import Integer
 
+from interp.server import send_at_once
+
 #: Defaults for a classroom: a closed tab's kernel goes after 5 minutes; at most 30 kernels
 #: (about 4 GB) at once.
 IDLE_SECONDS, INTERVAL_SECONDS, MAX_KERNELS = 300, 60, 30
@@ -37,6 +41,10 @@ class ClassroomKernelManager(AsyncMappingKernelManager):
     max_kernels = Integer(
         MAX_KERNELS, config=True, help="Most kernels alive at once; 0 for no limit."
     )
+
+    def __init__(self, **kwargs: object) -> None:
+        super().__init__(**kwargs)
+        send_at_once()  # this is Voilà's server process: its kernel websockets, from now on
 
     async def start_kernel(self, **kwargs: object) -> str:
         """Start a kernel, first making room if the cap is reached."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import base64
 import contextlib
+import ctypes
 import http.client
 import io
 import json
@@ -161,6 +162,70 @@ def _wait_for_log(text: str, process: subprocess.Popen, log: Path, seconds: floa
             raise RuntimeError(f"server exited:\n{log.read_text()[-3000:]}")
         time.sleep(0.2)
     raise RuntimeError(f"the server never said it runs at {text}:\n{log.read_text()[-3000:]}")
+
+
+# --- a server's sockets (Linux) ---------------------------------------------------------------
+
+#: Linux's system call number of pidfd_getfd on x86-64 and arm64 (both 438).
+PIDFD_GETFD = 438
+
+
+def socket_inode(local_port: int, remote_port: int) -> str:
+    """The inode of the TCP socket bound to ``local_port`` and connected to ``remote_port``."""
+    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
+        for line in Path(table).read_text().splitlines()[1:]:
+            fields = line.split()
+            local, remote = fields[1], fields[2]
+            if (
+                int(local.rsplit(":", 1)[1], 16) == local_port
+                and int(remote.rsplit(":", 1)[1], 16) == remote_port
+            ):
+                return fields[9]
+    raise AssertionError(f"no socket from port {local_port} to {remote_port}")
+
+
+def socket_owner(inode: str) -> tuple[int, int]:
+    """The process holding a socket, and its file descriptor there."""
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            for fd in os.listdir(f"/proc/{pid}/fd"):
+                if os.readlink(f"/proc/{pid}/fd/{fd}") == f"socket:[{inode}]":
+                    return int(pid), int(fd)
+        except OSError:  # a process that ended, or one not ours
+            continue
+    raise AssertionError(f"no process holds socket {inode}")
+
+
+def nodelay_of(pid: int, fd: int) -> int:
+    """TCP_NODELAY of file descriptor ``fd`` of process ``pid``."""
+    libc = ctypes.CDLL(None, use_errno=True)
+    pidfd = os.pidfd_open(pid)
+    try:
+        copy = libc.syscall(PIDFD_GETFD, pidfd, fd, 0)
+        if copy < 0:
+            raise OSError(ctypes.get_errno(), "pidfd_getfd")
+    finally:
+        os.close(pidfd)
+    with socket.socket(fileno=copy) as copied:  # closes the copy only
+        return copied.getsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY)
+
+
+def server_nodelay(pid: int, port: int) -> list[int]:
+    """TCP_NODELAY of every connection that process ``pid`` accepted on ``port``."""
+    inodes = set()
+    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
+        for line in Path(table).read_text().splitlines()[1:]:
+            fields = line.split()
+            established = fields[3] == "01"
+            if established and int(fields[1].rsplit(":", 1)[1], 16) == port:
+                inodes.add(fields[9])
+    values = []
+    for fd in os.listdir(f"/proc/{pid}/fd"):
+        with contextlib.suppress(OSError):
+            link = os.readlink(f"/proc/{pid}/fd/{fd}")
+            if link.startswith("socket:[") and link[8:-1] in inodes:
+                values.append(nodelay_of(pid, int(fd)))
+    return values
 
 
 def stop(process: subprocess.Popen) -> None:

@@ -24,6 +24,7 @@ from browser import (
     SCREENSHOTS,
     free_port,
     server,
+    server_nodelay,
     steady_box,
     stop,
     sync_api,
@@ -301,6 +302,9 @@ def test_classroom_server_culls_closed_pages_and_caps_kernels(tmp_path, browser)
             page.locator(".jupyter-matplotlib-canvas-div canvas").first.wait_for(timeout=120_000)
             opened.append(page)
         assert kernel_processes(process.pid) == 2
+        # Each page's kernel websocket sends without delay (interp.server, which Voila alone
+        # would not load); the page's other connections are plain HTTP, with tornado's default.
+        assert server_nodelay(process.pid, port).count(1) >= 2
         # A third page would pass the cap, and every kernel has a page: refused, not started.
         third = browser.new_page()
         response = third.goto(url, timeout=120_000)
