@@ -42,16 +42,16 @@ $(BIN)/python:
 
 # An editable install leaves out the package's data files: the file that enables the server
 # extension interp.server (kernel messages sent to the page without delay) is copied by hand.
-SERVER_CONFIG := etc/jupyter/jupyter_server_config.d/interp.json
+SERVER_CONFIG := etc/jupyter/jupyter_server_config.d/interp.server.json
 
 $(RUNTIME): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e .
-	install -D -m 644 jupyter-config/jupyter_server_config.d/interp.json $(VENV)/$(SERVER_CONFIG)
+	install -D -m 644 jupyter-config/jupyter_server_config.d/interp.server.json $(VENV)/$(SERVER_CONFIG)
 	touch $@
 
 $(VENV)/.installed-%: pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e ".[$*]"
-	install -D -m 644 jupyter-config/jupyter_server_config.d/interp.json $(VENV)/$(SERVER_CONFIG)
+	install -D -m 644 jupyter-config/jupyter_server_config.d/interp.server.json $(VENV)/$(SERVER_CONFIG)
 	touch $@
 
 $(NBGRADER_DONE): pyproject.toml

@@ -12,7 +12,7 @@ new pixels, 60 ms became 43 ms. For slider steps alone (no cell run in between) 
 took 2-3 ms either way, and ``make bench-browser`` shows no difference beyond its noise.
 
 Installing the package enables this extension for JupyterLab and ``jupyter server`` (the file
-``etc/jupyter/jupyter_server_config.d/interp.json`` in the environment);
+``etc/jupyter/jupyter_server_config.d/interp.server.json`` in the environment);
 ``python -m interp.classroom`` applies it to Voilà's own server. To turn it off:
 ``jupyter server extension disable interp.server``.
 """
