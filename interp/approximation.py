@@ -39,6 +39,18 @@ class Costs:
     mean_error: np.ndarray
 
 
+def _distinct(ids: np.ndarray, size: int) -> np.ndarray:
+    """The distinct values among ``ids`` (integers in [0, size)), sorted: ``np.unique``, but
+    counted rather than hashed (25 times faster for a frame's fragments, ~1.7 ms each).
+
+    Examples
+    --------
+    >>> _distinct(np.array([3, 1, 3, 0]), 5).tolist()
+    [0, 1, 3]
+    """
+    return np.flatnonzero(np.bincount(ids, minlength=size))
+
+
 def _mean_texel_error(approximate: np.ndarray, exact: np.ndarray, frequency: float) -> float:
     return float(np.mean(_texel_error(approximate, exact, frequency))) if exact.size else 0.0
 
@@ -69,7 +81,7 @@ def span_costs(
     frags = fragments(scene.clip, scene.uv, scene.triangles, width, height)
     exact = fragment_values(frags, "perspective")
     pixels = max(len(frags.pixel), 1)
-    rows = frags.row_spans[np.unique(frags.row_item)]
+    rows = frags.row_spans[_distinct(frags.row_item, len(frags.row_spans))]
     lengths = rows[:, 1] - rows[:, 0] + 1
     divides, errors = [], []
     for n in spans:
@@ -106,6 +118,7 @@ def tessellation_costs(
         exact = fragment_values(frags, "perspective")
         affine = fragment_values(frags, "affine")
         errors.append(_mean_texel_error(affine, exact, frequency))
-        visible = np.unique(scene.triangles[np.unique(frags.triangle)])
+        drawn = _distinct(frags.triangle, len(scene.triangles))
+        visible = _distinct(scene.triangles[drawn].ravel(), len(scene.clip))
         divides.append(len(visible) / max(len(frags.pixel), 1))
     return Costs(np.array(quads), np.array(divides), np.array(errors))
