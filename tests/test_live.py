@@ -65,9 +65,11 @@ def test_changed_limits_redraw_the_whole_figure():
 
 
 def test_a_burst_of_changes_is_drawn_once_with_the_newest_values():
+    """The first message after a pause is drawn at once; the rest of the burst, which came
+    while it was drawn, once, with the newest value; the release too."""
     shown = []
     state = {"value": 0}
-    coalescer = Coalescer(lambda: shown.append(state["value"]), settle=0.01)
+    coalescer = Coalescer(lambda: shown.append(state["value"]), settle=0.01, idle=1.0)
 
     async def drag():
         for value in range(1, 31):  # thirty slider messages, faster than a frame
@@ -80,8 +82,24 @@ def test_a_burst_of_changes_is_drawn_once_with_the_newest_values():
         await asyncio.sleep(0.05)
 
     asyncio.run(drag())
-    assert shown == [30, 99]
-    assert (coalescer.requests, coalescer.draws) == (31, 2)
+    assert shown == [1, 30, 99]
+    assert (coalescer.requests, coalescer.draws) == (31, 3)
+
+
+def test_a_change_after_a_pause_is_drawn_without_waiting():
+    """A key press on a slider after a pause: no message can be waiting, so the draw comes at
+    the event loop's next turn, not ``settle`` seconds later (4 ms of every step before)."""
+    shown = []
+    coalescer = Coalescer(lambda: shown.append(1), settle=10.0, idle=0.0)
+
+    async def press():
+        coalescer.request()
+        coalescer.request()  # within the same message: one draw
+        await asyncio.sleep(0)
+        return list(shown)
+
+    assert asyncio.run(press()) == [1]
+    assert (coalescer.requests, coalescer.draws) == (2, 1)
 
 
 def test_without_an_event_loop_each_change_draws_at_once():

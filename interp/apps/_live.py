@@ -12,7 +12,9 @@ behind it. These things make that so (measured in the browser by ``make bench-br
   axis limits, legend or size is noticed and redraws everything once.
 - **Latest value wins.** A slider change only marks the figure out of date; the drawing happens
   once the kernel has taken in the messages already waiting, with the newest values. A drag
-  never builds a backlog, and the last value is always drawn.
+  never builds a backlog, and the last value is always drawn. A change that comes when
+  nothing was drawn for a while (a key press, the first move of a drag) is drawn at the
+  event loop's next turn, without waiting for more.
 - **Cheap, whole frames.** Each frame is the whole figure as a PNG written for speed (see
   :func:`png`): no row filters, the fastest zlib level; less than half the time of ipympl's
   default diff frames, and a frame the browser drops can never leave a figure half drawn.
@@ -37,6 +39,7 @@ import asyncio
 import math
 import struct
 import threading
+import time
 import zlib
 from collections.abc import Callable
 from types import MethodType
@@ -55,6 +58,9 @@ PNG_LEVEL = 1
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 #: How long a pending redraw waits for more slider messages to arrive, in seconds.
 SETTLE = 0.004
+#: A request this long after the last draw ended (seconds) finds no messages waiting: the
+#: kernel took in those that came during the draw long ago. It is drawn without the wait.
+IDLE = 0.05
 #: Held while an app changes or draws its figure, on whichever thread: matplotlib is not
 #: thread-safe, and the style sheet is applied through the global rcParams.
 DRAW_LOCK = threading.RLock()
@@ -396,15 +402,21 @@ def _opaque(legend: Legend) -> bool:
 class Coalescer:
     """Calls ``draw`` once for any number of :meth:`request` calls that arrive meanwhile.
 
-    Inside a running event loop (a kernel), a request schedules ``draw`` a moment later unless
-    one is already scheduled; requests arriving before it runs are absorbed, so ``draw`` sees
-    only the newest state. Without a running loop (tests, scripts) ``draw`` runs at once.
+    Inside a running event loop (a kernel), a request schedules ``draw`` unless one is already
+    scheduled: ``settle`` seconds later if the last draw ended less than ``idle`` seconds ago
+    (the messages that came during it may still be waiting), else at the loop's next turn.
+    Requests arriving before it runs are absorbed, so ``draw`` sees only the newest state.
+    Without a running loop (tests, scripts) ``draw`` runs at once.
     """
 
-    def __init__(self, draw: Callable[[], None], settle: float = SETTLE) -> None:
+    def __init__(
+        self, draw: Callable[[], None], settle: float = SETTLE, idle: float = IDLE
+    ) -> None:
         self._draw = draw
         self._settle = settle
+        self._idle = idle
         self._scheduled = False
+        self._ended = -math.inf
         self.requests = self.draws = 0
 
     def request(self) -> None:
@@ -417,12 +429,18 @@ class Coalescer:
             return
         if not self._scheduled:
             self._scheduled = True
-            loop.call_later(self._settle, self._run)
+            if time.monotonic() - self._ended > self._idle:
+                loop.call_soon(self._run)
+            else:
+                loop.call_later(self._settle, self._run)
 
     def _run(self) -> None:
         self._scheduled = False
         self.draws += 1
-        self._draw()
+        try:
+            self._draw()
+        finally:
+            self._ended = time.monotonic()
 
 
 def png(rgba: np.ndarray, level: int = PNG_LEVEL) -> bytes:
