@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from interp import apps
+from interp.apps._glyphs import keep_glyphs
 from interp.apps._live import Blitter, Coalescer
 from interp.plots import styled
 
@@ -50,6 +51,33 @@ def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
         app.figure.canvas.draw()
         np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
     assert blitter.blits >= 1, "the blit path was never taken"
+
+
+@pytest.mark.parametrize("name", sorted(apps.ALL))
+def test_kept_glyphs_draw_text_as_matplotlib_does(name):
+    """A live figure's text comes from kept layouts and glyph pictures (``_glyphs``): every
+    app, at three settings of its first slider, is the figure matplotlib draws alone, pixel
+    for pixel (rotated axis labels, mathtext and titles included)."""
+    kept, plain = apps.ALL[name](), apps.ALL[name]()
+    assert keep_glyphs(kept.figure.canvas.get_renderer())
+    control = next((n for n, c in kept.controls.items() if hasattr(c, "min")), None)
+    settings = [{}]
+    if control is not None:
+        slider = kept.controls[control]
+        kind = type(slider.value)
+        settings = [{control: kind(v)} for v in np.linspace(slider.min, slider.max, 3)]
+    for values in settings:
+        for app in (kept, plain):
+            app.set(**values)
+            app.figure.canvas.draw()
+        np.testing.assert_array_equal(
+            np.asarray(kept.figure.canvas.buffer_rgba()),
+            np.asarray(plain.figure.canvas.buffer_rgba()),
+            err_msg=f"{name} at {values}",
+        )
+    assert kept.figure.canvas.get_renderer().glyphs, "no glyph was kept"
+    plt.close(kept.figure)
+    plt.close(plain.figure)
 
 
 def test_changed_limits_redraw_the_whole_figure():

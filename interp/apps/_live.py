@@ -10,6 +10,8 @@ behind it. These things make that so (measured in the browser by ``make bench-br
   put back instead of being laid out and drawn again: that was a third of a step in the 1D
   apps; so is a title that looks as it did last time (text is costly to render). A change of
   axis limits, legend or size is noticed and redraws everything once.
+- **Kept glyphs.** Text that is drawn is laid out once per string and rendered once per glyph
+  and place within a pixel (:mod:`interp.apps._glyphs`), the same pixels as matplotlib's.
 - **Latest value wins.** A slider change only marks the figure out of date; the drawing happens
   once the kernel has taken in the messages already waiting, with the newest values. A drag
   never builds a backlog, and the last value is always drawn. A change that comes when
@@ -51,6 +53,8 @@ from matplotlib.figure import Figure
 from matplotlib.legend import Legend
 from matplotlib.text import Text
 from matplotlib.transforms import Bbox
+
+from interp.apps._glyphs import keep_glyphs
 
 #: zlib level of live frames (PIL's default is 6).
 PNG_LEVEL = 1
@@ -193,6 +197,7 @@ class Blitter:
     def draw(self) -> None:
         """Show the figure's current state."""
         canvas = self.figure.canvas
+        keep_glyphs(canvas.get_renderer())  # anew when the size changes the renderer
         if self.dynamic is None:
             self.full_draws += 1
             canvas.draw()

@@ -1,0 +1,150 @@
+"""Text in a live figure drawn from kept glyphs.
+
+matplotlib 3.11 draws text glyph by glyph: it lays the string out (``FT2Font._layout``, about
+0.2 ms for a label of three letters, 1 ms for a line of a title) and then has FreeType render
+each glyph at its place (50 us a glyph). A live figure draws the same labels and titles on
+every step, mostly with the same text and often at the same place: lesson 1's two-line title
+took 9 ms a step, its nine labels 6 ms. :func:`keep_glyphs` makes a figure's renderer keep
+both: each string's layout, and each glyph's picture for its position within a pixel. A
+glyph's picture depends only on that fraction (FreeType renders the outline moved by whole
+pixels to the same picture, moved), so a kept picture is put where the glyph goes now, and the
+text is the same, pixel for pixel, as matplotlib draws it (``tests/test_live.py`` compares
+every app's frames with figures drawn by matplotlib alone).
+
+Only where matplotlib draws text as 3.11 does (the private methods this relies on exist);
+otherwise the renderer is left as it is.
+"""
+
+from __future__ import annotations
+
+import math
+from types import MethodType
+
+import numpy as np
+from matplotlib.backends.backend_agg import RendererAgg, get_hinting_flag
+from matplotlib.ft2font import FT2Font, RenderMode
+
+#: Kept layouts and glyph pictures per renderer, at most; then they are dropped and kept anew.
+LIMIT = 20_000
+#: What matplotlib must have for :func:`keep_glyphs` to apply.
+_NEEDS = (
+    (RendererAgg, "_draw_text_glyphs_and_boxes"),
+    (RendererAgg, "_prepare_font"),
+    (FT2Font, "_layout"),
+    (FT2Font, "_render_glyph"),
+    (FT2Font, "_set_transform"),
+)
+
+
+def keep_glyphs(renderer: RendererAgg) -> bool:
+    """Make ``renderer`` keep text layouts and glyph pictures; whether it does (it may already).
+
+    Examples
+    --------
+    >>> from matplotlib.backends.backend_agg import FigureCanvasAgg
+    >>> from matplotlib.figure import Figure
+    >>> canvas = FigureCanvasAgg(Figure())
+    >>> _ = canvas.figure.suptitle("kept")
+    >>> keep_glyphs(canvas.get_renderer())
+    True
+    >>> canvas.draw()
+    >>> len(canvas.get_renderer().glyphs)   # k, e, p and t, each at its place in a pixel
+    4
+    """
+    if getattr(renderer, "keeps_glyphs", False):
+        return True
+    if not all(hasattr(owner, name) for owner, name in _NEEDS):
+        return False
+    renderer.layouts = {}
+    renderer.glyphs = {}
+    renderer.draw_text = MethodType(_draw_text, renderer)
+    renderer._draw_text_glyphs_and_boxes = MethodType(_draw_text_glyphs_and_boxes, renderer)
+    renderer.keeps_glyphs = True
+    return True
+
+
+def _draw_text_glyphs_and_boxes(
+    self: RendererAgg,
+    gc: object,
+    x: float,
+    y: float,
+    angle: float,
+    glyphs: object,
+    boxes: object,
+) -> None:
+    """The glyphs from kept pictures (:func:`_draw_glyphs`), the boxes (mathtext's rules) as
+    matplotlib draws them."""
+    _draw_glyphs(self, gc, x, y, angle, glyphs)
+    if boxes:
+        RendererAgg._draw_text_glyphs_and_boxes(self, gc, x, y, angle, (), boxes)
+
+
+def _draw_text(
+    self: RendererAgg,
+    gc: object,
+    x: float,
+    y: float,
+    s: str,
+    prop: object,
+    angle: float,
+    ismath: bool | str = False,
+    mtext: object = None,
+) -> None:
+    """``RendererAgg.draw_text`` of matplotlib 3.11, with each string's layout kept."""
+    if ismath:
+        return RendererAgg.draw_text(self, gc, x, y, s, prop, angle, ismath, mtext)
+    font = self._prepare_font(prop)
+    features = mtext.get_fontfeatures() if mtext is not None else None
+    language = mtext.get_language() if mtext is not None else None
+    size = prop.get_size_in_points()
+    key = (font, s, size, self.dpi, get_hinting_flag(), repr(features), repr(language))
+    items = self.layouts.get(key)
+    if items is None:
+        if len(self.layouts) >= LIMIT:
+            self.layouts.clear()
+        laid_out = font._layout(s, flags=get_hinting_flag(), features=features, language=language)
+        items = self.layouts[key] = [(i.ft_object, i.glyph_index, i.x, i.y) for i in laid_out]
+    glyphs = ((ft_object, size, index, 0, 1, dx, dy) for ft_object, index, dx, dy in items)
+    return self._draw_text_glyphs_and_boxes(gc, x, y, angle, glyphs, [])
+
+
+def _draw_glyphs(
+    self: RendererAgg, gc: object, x: float, y: float, angle: float, glyphs: object
+) -> None:
+    """The glyphs of ``RendererAgg._draw_text_glyphs_and_boxes`` (matplotlib 3.11), each
+    rendered once per position within a pixel and then put back where it goes."""
+    cos = math.cos(math.radians(angle))
+    sin = math.sin(math.radians(angle))
+    load_flags = get_hinting_flag()
+    antialiased = gc.get_antialiased()
+    for font, size, glyph_index, slant, extend, dx, dy in glyphs:  # dy is upwards
+        # Where the glyph goes, in 1/64 pixel (FreeType's y is upwards).
+        px = round(0x40 * (x + dx * cos - dy * sin))
+        py = round(0x40 * (self.height - y + dx * sin + dy * cos))
+        key = (font, size, self.dpi, glyph_index, slant, extend, angle, px & 63, py & 63)
+        key += (load_flags, antialiased)
+        kept = self.glyphs.get(key)
+        if kept is None:
+            if len(self.glyphs) >= LIMIT:
+                self.glyphs.clear()
+            font.set_size(size, self.dpi)
+            font._set_transform(
+                (0x10000 * np.array([[cos, -sin], [sin, cos]]) @ [[extend, extend * slant], [0, 1]])
+                .round()
+                .astype(int),
+                [px & 63, py & 63],
+            )
+            bitmap = font._render_glyph(
+                glyph_index, load_flags, RenderMode.NORMAL if antialiased else RenderMode.MONO
+            )
+            buffer = bitmap.buffer
+            if not antialiased:
+                buffer *= 0xFF
+            kept = self.glyphs[key] = (buffer, bitmap.left, bitmap.top)
+        buffer, left, top = kept
+        left += px >> 6
+        top += py >> 6
+        # draw_text_image's y is downwards & the bitmap bottom side.
+        self._renderer.draw_text_image(
+            buffer, left, int(self.height) - top + buffer.shape[0], 0, gc
+        )
