@@ -441,6 +441,35 @@ def test_a_label_reaching_into_a_kept_titles_box_is_drawn():
     assert blitter.blits == 4
 
 
+def test_a_label_that_follows_a_changing_curve_into_a_title_box_is_drawn():
+    """A static label placed relative to a changing artist (``xycoords=curve``) moves with it
+    though nothing in the background changes; where it reaches is measured on every frame,
+    so a kept title's picture never covers it (a reviewer's case: 117 pixels wrong when its
+    reach was kept per background)."""
+    with styled():
+        figure = plt.figure(figsize=(3, 2.4), dpi=100)
+        ax = figure.add_subplot()
+        ax.set_xlim(0, 1)
+        ax.set_ylim(0, 1)
+        ax.set_title("a title that stays")
+        (curve,) = ax.plot([0.3, 0.7], [0.1, 0.1])
+        ax.annotate(
+            "NOTE", xy=(0.5, 1), xycoords=curve, xytext=(0, 4), textcoords="offset points",
+            ha="center", va="bottom", fontsize=14, annotation_clip=False, clip_on=False,
+        )  # fmt: skip
+        figure.get_layout_engine().execute(figure)
+        figure.set_layout_engine("none")  # frozen, as in the apps
+    blitter = Blitter(figure, [curve])
+    blitter.draw()
+    for y in (0.1, 0.1, 1.05):
+        curve.set_ydata([y, y])
+        blitter.draw()
+        blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
+        figure.canvas.draw()
+        np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
+    assert blitter.blits == 3
+
+
 def test_a_legend_placed_best_moves_with_the_curves():
     """``loc="best"`` (matplotlib's default) moves a legend away from the curves as they
     move: such a legend is drawn on every blit, not kept."""

@@ -46,11 +46,13 @@ import zlib
 from collections.abc import Callable
 from types import MethodType
 
+import matplotlib
 import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.legend import Legend
+from matplotlib.spines import Spine
 from matplotlib.text import Text
 from matplotlib.transforms import Bbox
 
@@ -188,9 +190,9 @@ class Blitter:
         #: Each title among the layers as last drawn: id -> (what it looked like, region).
         self.titles: dict[int, tuple[tuple, object]] = {}
         self._title_ids: set[int] = set()
-        #: Where each static layer reaches on the canvas, measured once per background.
+        #: Where each spine among the layers reaches on the canvas, measured once per background.
         self._reach: dict[int, Bbox] = {}
-        #: Where each changing layer reaches, measured once per frame.
+        #: Where each other unclipped layer reaches, measured once per frame.
         self._reach_now: dict[int, Bbox] = {}
         self.full_draws = self.blits = 0
 
@@ -284,6 +286,10 @@ class Blitter:
             title.get_rotation(),
             title.get_antialiased(),
             title.get_usetex(),
+            getattr(title, "_multialignment", None),
+            repr(getattr(title, "get_fontfeatures", lambda: None)()),
+            repr(getattr(title, "get_language", lambda: None)()),
+            matplotlib.rcParams["text.hinting"],
         )
         last, kept = self.titles.get(id(title), (None, None))
         if last is not None and last != look:  # changed since the last step: may change again
@@ -308,22 +314,23 @@ class Blitter:
         """Whether ``box`` (around ``title``) meets no axes and nothing else the blit draws: an
         artist clipped to its axes stays inside them; any other (a label, an annotation, a
         legend) may reach up into a title's box, where the saved picture would erase it.
-        Where a static artist reaches (a spine, a legend) is measured once per background."""
+        Where a spine reaches (with its ticks) is measured once per background, where any
+        other reaches once per frame."""
         if any(ax.bbox.overlaps(box) for ax in self.figure.axes):
             return False
         for other in self.layers:
             if other is title or not other.get_visible():
                 continue
-            reach = self._reach.get(id(other), self._reach_now.get(id(other)))
+            if other.get_clip_on() and other.get_clip_box() is not None:
+                reach = other.get_clip_box()
+            else:
+                reach = self._reach.get(id(other), self._reach_now.get(id(other)))
             if reach is None:
-                if other.get_clip_on() and other.get_clip_box() is not None:
-                    reach = other.get_clip_box()
-                else:
-                    reach = other.get_window_extent(renderer)
-                if id(other) not in self._dynamic_ids and id(other) not in self._title_ids:
-                    self._reach[id(other)] = reach  # for as long as the background is kept
-                else:
-                    self._reach_now[id(other)] = reach  # for this frame
+                reach = other.get_window_extent(renderer)
+                if isinstance(other, Spine):  # moves only with its axes, as the background
+                    self._reach[id(other)] = reach
+                else:  # a static label may still follow a changing artist it points at
+                    self._reach_now[id(other)] = reach
             if reach.width > 0 and reach.height > 0 and reach.overlaps(box):
                 return False
         return True
