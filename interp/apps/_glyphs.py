@@ -9,35 +9,32 @@ both: each string's layout, and each glyph's picture for its position within a p
 glyph's picture depends only on that fraction (FreeType renders the outline moved by whole
 pixels to the same picture, moved), so a kept picture is put where the glyph goes now, and the
 text is the same, pixel for pixel, as matplotlib draws it (``tests/test_live.py`` compares
-every app's frames with figures drawn by matplotlib alone).
+every app's frames with figures drawn by matplotlib alone). One difference: text placed some
+300,000 pixels off the canvas, which FreeType refuses to render, is rendered here (at its
+place within a pixel) and then falls outside the canvas.
 
-Only where matplotlib draws text as 3.11 does (the private methods this relies on exist);
-otherwise the renderer is left as it is.
+:class:`GlyphKeepingRenderer` repeats matplotlib 3.11's ``RendererAgg.draw_text`` with the two
+things kept, so it applies to matplotlib 3.11 only; with another version a renderer is left as
+it is.
 """
 
 from __future__ import annotations
 
 import math
-from types import MethodType
 
+import matplotlib
 import numpy as np
 from matplotlib.backends.backend_agg import RendererAgg, get_hinting_flag
-from matplotlib.ft2font import FT2Font, RenderMode
+from matplotlib.ft2font import RenderMode
 
 #: Kept layouts and glyph pictures per renderer, at most; then they are dropped and kept anew.
 LIMIT = 20_000
-#: What matplotlib must have for :func:`keep_glyphs` to apply.
-_NEEDS = (
-    (RendererAgg, "_draw_text_glyphs_and_boxes"),
-    (RendererAgg, "_prepare_font"),
-    (FT2Font, "_layout"),
-    (FT2Font, "_render_glyph"),
-    (FT2Font, "_set_transform"),
-)
+#: The matplotlib whose text drawing :class:`GlyphKeepingRenderer` repeats.
+MATPLOTLIB = (3, 11)
 
 
 def keep_glyphs(renderer: RendererAgg) -> bool:
-    """Make ``renderer`` keep text layouts and glyph pictures; whether it does (it may already).
+    """Make ``renderer`` a :class:`GlyphKeepingRenderer`; whether it is one (it may already).
 
     Examples
     --------
@@ -51,100 +48,117 @@ def keep_glyphs(renderer: RendererAgg) -> bool:
     >>> len(canvas.get_renderer().glyphs)   # k, e, p and t, each at its place in a pixel
     4
     """
-    if getattr(renderer, "keeps_glyphs", False):
+    if isinstance(renderer, GlyphKeepingRenderer):
         return True
-    if not all(hasattr(owner, name) for owner, name in _NEEDS):
+    version = tuple(int(part) for part in matplotlib.__version__.split(".")[:2])
+    if type(renderer) is not RendererAgg or version != MATPLOTLIB:
         return False
+    renderer.__class__ = GlyphKeepingRenderer  # the same object, drawing text from kept glyphs
     renderer.layouts = {}
     renderer.glyphs = {}
-    renderer.draw_text = MethodType(_draw_text, renderer)
-    renderer._draw_text_glyphs_and_boxes = MethodType(_draw_text_glyphs_and_boxes, renderer)
-    renderer.keeps_glyphs = True
     return True
 
 
-def _draw_text_glyphs_and_boxes(
-    self: RendererAgg,
-    gc: object,
-    x: float,
-    y: float,
-    angle: float,
-    glyphs: object,
-    boxes: object,
-) -> None:
-    """The glyphs from kept pictures (:func:`_draw_glyphs`), the boxes (mathtext's rules) as
-    matplotlib draws them."""
-    _draw_glyphs(self, gc, x, y, angle, glyphs)
-    if boxes:
-        RendererAgg._draw_text_glyphs_and_boxes(self, gc, x, y, angle, (), boxes)
+class GlyphKeepingRenderer(RendererAgg):
+    """matplotlib's Agg renderer, keeping each string's layout and each glyph's picture per
+    place within a pixel (made from a :class:`RendererAgg` by :func:`keep_glyphs`).
 
+    Attributes
+    ----------
+    layouts : dict
+        (font, text, size, dpi, hinting, features, language) -> the glyphs and their offsets.
+    glyphs : dict
+        (font, size, dpi, glyph, slant, extend, angle, place in the pixel, hinting,
+        antialiased) -> the glyph's picture and its corner relative to the whole pixel.
+    """
 
-def _draw_text(
-    self: RendererAgg,
-    gc: object,
-    x: float,
-    y: float,
-    s: str,
-    prop: object,
-    angle: float,
-    ismath: bool | str = False,
-    mtext: object = None,
-) -> None:
-    """``RendererAgg.draw_text`` of matplotlib 3.11, with each string's layout kept."""
-    if ismath:
-        return RendererAgg.draw_text(self, gc, x, y, s, prop, angle, ismath, mtext)
-    font = self._prepare_font(prop)
-    features = mtext.get_fontfeatures() if mtext is not None else None
-    language = mtext.get_language() if mtext is not None else None
-    size = prop.get_size_in_points()
-    key = (font, s, size, self.dpi, get_hinting_flag(), repr(features), repr(language))
-    items = self.layouts.get(key)
-    if items is None:
-        if len(self.layouts) >= LIMIT:
-            self.layouts.clear()
-        laid_out = font._layout(s, flags=get_hinting_flag(), features=features, language=language)
-        items = self.layouts[key] = [(i.ft_object, i.glyph_index, i.x, i.y) for i in laid_out]
-    glyphs = ((ft_object, size, index, 0, 1, dx, dy) for ft_object, index, dx, dy in items)
-    return self._draw_text_glyphs_and_boxes(gc, x, y, angle, glyphs, [])
+    layouts: dict
+    glyphs: dict
 
-
-def _draw_glyphs(
-    self: RendererAgg, gc: object, x: float, y: float, angle: float, glyphs: object
-) -> None:
-    """The glyphs of ``RendererAgg._draw_text_glyphs_and_boxes`` (matplotlib 3.11), each
-    rendered once per position within a pixel and then put back where it goes."""
-    cos = math.cos(math.radians(angle))
-    sin = math.sin(math.radians(angle))
-    load_flags = get_hinting_flag()
-    antialiased = gc.get_antialiased()
-    for font, size, glyph_index, slant, extend, dx, dy in glyphs:  # dy is upwards
-        # Where the glyph goes, in 1/64 pixel (FreeType's y is upwards).
-        px = round(0x40 * (x + dx * cos - dy * sin))
-        py = round(0x40 * (self.height - y + dx * sin + dy * cos))
-        key = (font, size, self.dpi, glyph_index, slant, extend, angle, px & 63, py & 63)
-        key += (load_flags, antialiased)
-        kept = self.glyphs.get(key)
-        if kept is None:
-            if len(self.glyphs) >= LIMIT:
-                self.glyphs.clear()
-            font.set_size(size, self.dpi)
-            font._set_transform(
-                (0x10000 * np.array([[cos, -sin], [sin, cos]]) @ [[extend, extend * slant], [0, 1]])
-                .round()
-                .astype(int),
-                [px & 63, py & 63],
+    def draw_text(
+        self,
+        gc: object,
+        x: float,
+        y: float,
+        s: str,
+        prop: object,
+        angle: float,
+        ismath: bool | str = False,
+        mtext: object = None,
+    ) -> None:
+        """``RendererAgg.draw_text`` of matplotlib 3.11, with each string's layout kept."""
+        if ismath:
+            return super().draw_text(gc, x, y, s, prop, angle, ismath, mtext)
+        font = self._prepare_font(prop)
+        features = mtext.get_fontfeatures() if mtext is not None else None
+        language = mtext.get_language() if mtext is not None else None
+        size = prop.get_size_in_points()
+        key = (font, s, size, self.dpi, get_hinting_flag(), repr(features), repr(language))
+        items = self.layouts.get(key)
+        if items is None:
+            if len(self.layouts) >= LIMIT:
+                self.layouts.clear()
+            laid_out = font._layout(
+                s, flags=get_hinting_flag(), features=features, language=language
             )
-            bitmap = font._render_glyph(
-                glyph_index, load_flags, RenderMode.NORMAL if antialiased else RenderMode.MONO
+            items = self.layouts[key] = [(i.ft_object, i.glyph_index, i.x, i.y) for i in laid_out]
+        glyphs = ((ft_object, size, index, 0, 1, dx, dy) for ft_object, index, dx, dy in items)
+        return self._draw_text_glyphs_and_boxes(gc, x, y, angle, glyphs, [])
+
+    def _draw_text_glyphs_and_boxes(
+        self,
+        gc: object,
+        x: float,
+        y: float,
+        angle: float,
+        glyphs: object,
+        boxes: object,
+    ) -> None:
+        """The glyphs from kept pictures (:meth:`_draw_glyphs`), the boxes (mathtext's rules)
+        as matplotlib draws them."""
+        self._draw_glyphs(gc, x, y, angle, glyphs)
+        if boxes:
+            super()._draw_text_glyphs_and_boxes(gc, x, y, angle, (), boxes)
+
+    def _draw_glyphs(self, gc: object, x: float, y: float, angle: float, glyphs: object) -> None:
+        """The glyphs of ``RendererAgg._draw_text_glyphs_and_boxes`` (matplotlib 3.11), each
+        rendered once per position within a pixel and then put back where it goes."""
+        cos = math.cos(math.radians(angle))
+        sin = math.sin(math.radians(angle))
+        load_flags = get_hinting_flag()
+        antialiased = gc.get_antialiased()
+        for font, size, glyph_index, slant, extend, dx, dy in glyphs:  # dy is upwards
+            # Where the glyph goes, in 1/64 pixel (FreeType's y is upwards).
+            px = round(0x40 * (x + dx * cos - dy * sin))
+            py = round(0x40 * (self.height - y + dx * sin + dy * cos))
+            key = (font, size, self.dpi, glyph_index, slant, extend, angle, px & 63, py & 63)
+            key += (load_flags, antialiased)
+            kept = self.glyphs.get(key)
+            if kept is None:
+                if len(self.glyphs) >= LIMIT:
+                    self.glyphs.clear()
+                font.set_size(size, self.dpi)
+                font._set_transform(
+                    (
+                        0x10000
+                        * np.array([[cos, -sin], [sin, cos]])
+                        @ [[extend, extend * slant], [0, 1]]
+                    )
+                    .round()
+                    .astype(int),
+                    [px & 63, py & 63],
+                )
+                bitmap = font._render_glyph(
+                    glyph_index, load_flags, RenderMode.NORMAL if antialiased else RenderMode.MONO
+                )
+                buffer = bitmap.buffer
+                if not antialiased:
+                    buffer *= 0xFF
+                kept = self.glyphs[key] = (buffer, bitmap.left, bitmap.top)
+            buffer, left, top = kept
+            left += px >> 6
+            top += py >> 6
+            # draw_text_image's y is downwards & the bitmap bottom side.
+            self._renderer.draw_text_image(
+                buffer, left, int(self.height) - top + buffer.shape[0], 0, gc
             )
-            buffer = bitmap.buffer
-            if not antialiased:
-                buffer *= 0xFF
-            kept = self.glyphs[key] = (buffer, bitmap.left, bitmap.top)
-        buffer, left, top = kept
-        left += px >> 6
-        top += py >> 6
-        # draw_text_image's y is downwards & the bitmap bottom side.
-        self._renderer.draw_text_image(
-            buffer, left, int(self.height) - top + buffer.shape[0], 0, gc
-        )
