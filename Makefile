@@ -41,17 +41,20 @@ $(BIN)/python:
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
 # An editable install leaves out the package's data files: the file that enables the server
-# extension interp.server (kernel messages sent to the page without delay) is copied by hand.
-SERVER_CONFIG := etc/jupyter/jupyter_server_config.d/interp.server.json
+# extension interp.server (kernel messages sent to the page without delay) is copied by hand,
+# unless it is there (`jupyter server extension disable interp.server` writes it, and stays).
+SERVER_CONFIG := $(VENV)/etc/jupyter/jupyter_server_config.d/interp.server.json
+ENABLE_SERVER := test -e $(SERVER_CONFIG) || install -D -m 644 \
+	jupyter-config/jupyter_server_config.d/interp.server.json $(SERVER_CONFIG)
 
 $(RUNTIME): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e .
-	install -D -m 644 jupyter-config/jupyter_server_config.d/interp.server.json $(VENV)/$(SERVER_CONFIG)
+	$(ENABLE_SERVER)
 	touch $@
 
 $(VENV)/.installed-%: pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e ".[$*]"
-	install -D -m 644 jupyter-config/jupyter_server_config.d/interp.server.json $(VENV)/$(SERVER_CONFIG)
+	$(ENABLE_SERVER)
 	touch $@
 
 $(NBGRADER_DONE): pyproject.toml

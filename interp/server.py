@@ -1,7 +1,7 @@
 """A Jupyter server extension: kernel messages leave for the page at once.
 
 The Jupyter server relays each kernel message to the page over a websocket, and leaves
-Nagle's algorithm on for that socket (jupyter_server 2.17 never calls ``set_nodelay``). With
+Nagle's algorithm on for that socket (jupyter_server 2.21 never calls ``set_nodelay``). With
 it on, the operating system holds a message back while an earlier one is still unacknowledged,
 and a page that has just sent something acknowledges late (Linux delays an acknowledgement by
 up to 40 ms). A slider step makes the kernel send a few small messages at once (busy, the

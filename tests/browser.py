@@ -171,16 +171,18 @@ PIDFD_GETFD = 438
 
 
 def socket_inode(local_port: int, remote_port: int) -> str:
-    """The inode of the TCP socket bound to ``local_port`` and connected to ``remote_port``."""
+    """The inode of the open TCP connection from ``local_port`` to ``remote_port``."""
     for table in ("/proc/net/tcp", "/proc/net/tcp6"):
         for line in Path(table).read_text().splitlines()[1:]:
             fields = line.split()
-            local, remote = fields[1], fields[2]
+            local, remote, state, inode = fields[1], fields[2], fields[3], fields[9]
             if (
-                int(local.rsplit(":", 1)[1], 16) == local_port
+                state == "01"  # established, not one closing (whose inode is 0)
+                and inode != "0"
+                and int(local.rsplit(":", 1)[1], 16) == local_port
                 and int(remote.rsplit(":", 1)[1], 16) == remote_port
             ):
-                return fields[9]
+                return inode
     raise AssertionError(f"no socket from port {local_port} to {remote_port}")
 
 

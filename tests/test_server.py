@@ -36,7 +36,8 @@ async def _kernel_socket_nodelay(base: str) -> int:
     channels = f"/api/kernels/{kernel}/channels?session_id={uuid.uuid4()}"
     websocket = await websocket_connect(base.replace("http", "ws", 1) + channels)
     try:
-        await websocket.read_message()  # the server has opened its side (a status message)
+        # The server has opened its side once it sends something (a status message).
+        await asyncio.wait_for(websocket.read_message(), timeout=60)
         mine = websocket.protocol.stream.socket.getsockname()[1]
         server_port = int(base.rsplit(":", 1)[1])
         return nodelay_of(*socket_owner(socket_inode(server_port, mine)))
