@@ -36,6 +36,13 @@ def _close_figures():
     plt.close("all")
 
 
+def assert_is_full_redraw(figure) -> None:
+    """The figure's canvas shows, pixel for pixel, what drawing the whole figure gives."""
+    shown = np.asarray(figure.canvas.buffer_rgba()).copy()
+    figure.canvas.draw()
+    np.testing.assert_array_equal(shown, np.asarray(figure.canvas.buffer_rgba()))
+
+
 @pytest.mark.parametrize("name", sorted(apps.ALL))
 def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
     app = apps.ALL[name]()
@@ -48,9 +55,7 @@ def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
         else:
             app.set(**{key: app.controls[key].value + (step if k % 2 == 0 else -step / 2)})
         blitter.draw()
-        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
-        app.figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
+        assert_is_full_redraw(app.figure)
     assert blitter.blits >= 1, "the blit path was never taken"
 
 
@@ -295,9 +300,7 @@ def test_an_orbit_of_3d_axes_redraws_everything_once():
     line.set_data_3d([0, 1], [1, 0], [0, 1])
     blitter.draw()
     assert blitter.full_draws == 2
-    blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
-    figure.canvas.draw()
-    np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
+    assert_is_full_redraw(figure)
 
 
 @pytest.mark.parametrize("shape", [(1, 1), (7, 13), (250, 820)])
@@ -344,11 +347,9 @@ def test_a_kept_legend_is_the_legend_drawn_again_with_a_curve_behind_it(monkeypa
     for y in np.linspace(box[0, 1] - 0.05, box[1, 1] + 0.05, 7):  # below, through, above it
         curve.set_ydata([y, 1 - y])
         blitter.draw()
-        blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
-        monkeypatch.setattr(Legend, "draw", draw)
-        figure.canvas.draw()
+        monkeypatch.setattr(Legend, "draw", draw)  # the full redraw's legend is not counted
+        assert_is_full_redraw(figure)
         monkeypatch.setattr(Legend, "draw", lambda self, r: (draws.append(1), draw(self, r))[1])
-        np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
     assert blitter.blits == 7
     assert draws == [], "the legend was drawn again instead of put back"
 
@@ -382,9 +383,7 @@ def test_a_title_drawn_as_before_is_put_back_and_a_changed_one_drawn(monkeypatch
         monkeypatch.setattr(Text, "draw", counted)
         blitter.draw()
         monkeypatch.setattr(Text, "draw", draw)
-        blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
-        figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
+        assert_is_full_redraw(figure)
     assert blitter.blits == 3
     assert "a title that stays" not in drawn
     assert [t for t in drawn if t.startswith("step")] == ["step 1", "step 2", "step 3"]
@@ -405,9 +404,7 @@ def test_a_title_changing_on_every_step_is_not_checked_for_keeping(monkeypatch):
     for step, w in enumerate((2.5, 3.0, 3.5, 4.0)):  # the title quotes s, which moves with w_A
         app.set(A_w=w)
         blitter.draw()
-        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
-        app.figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
+        assert_is_full_redraw(app.figure)
         assert checks == [], f"step {step}: the changed title's box was checked"
     assert blitter.blits == 4
 
@@ -437,9 +434,7 @@ def test_a_label_reaching_into_a_kept_titles_box_is_drawn():
     for x in (4.5, 4.0, 0.0, 4.5):
         app.set(A_x=x)
         blitter.draw()
-        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
-        app.figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
+        assert_is_full_redraw(app.figure)
     assert blitter.blits == 4
 
 
@@ -466,9 +461,7 @@ def test_a_label_that_follows_a_changing_curve_into_a_title_box_is_drawn():
     for y in (0.1, 0.1, 1.05):
         curve.set_ydata([y, y])
         blitter.draw()
-        blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
-        figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
+        assert_is_full_redraw(figure)
     assert blitter.blits == 3
 
 
@@ -487,7 +480,5 @@ def test_a_legend_placed_best_moves_with_the_curves():
     for y in (0.1, 0.5, 0.9):
         curve.set_ydata([y, y])
         blitter.draw()
-        blitted = np.asarray(figure.canvas.buffer_rgba()).copy()
-        figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(figure.canvas.buffer_rgba()))
+        assert_is_full_redraw(figure)
     assert blitter.legends == {}
