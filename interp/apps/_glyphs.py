@@ -31,6 +31,8 @@ from matplotlib.ft2font import RenderMode
 LIMIT = 20_000
 #: The matplotlib whose text drawing :class:`GlyphKeepingRenderer` repeats.
 MATPLOTLIB = (3, 11)
+#: Whether the matplotlib installed is that one.
+_APPLIES = tuple(int(part) for part in matplotlib.__version__.split(".")[:2]) == MATPLOTLIB
 
 
 def keep_glyphs(renderer: RendererAgg) -> bool:
@@ -50,8 +52,7 @@ def keep_glyphs(renderer: RendererAgg) -> bool:
     """
     if isinstance(renderer, GlyphKeepingRenderer):
         return True
-    version = tuple(int(part) for part in matplotlib.__version__.split(".")[:2])
-    if type(renderer) is not RendererAgg or version != MATPLOTLIB:
+    if type(renderer) is not RendererAgg or not _APPLIES:
         return False
     renderer.__class__ = GlyphKeepingRenderer  # the same object, drawing text from kept glyphs
     renderer.layouts = {}
@@ -131,8 +132,19 @@ class GlyphKeepingRenderer(RendererAgg):
             # Where the glyph goes, in 1/64 pixel (FreeType's y is upwards).
             px = round(0x40 * (x + dx * cos - dy * sin))
             py = round(0x40 * (self.height - y + dx * sin + dy * cos))
-            key = (font, size, self.dpi, glyph_index, slant, extend, angle, px & 63, py & 63)
-            key += (load_flags, antialiased)
+            place = (px & 63, py & 63)
+            key = (
+                font,
+                size,
+                self.dpi,
+                glyph_index,
+                slant,
+                extend,
+                angle,
+                place,
+                load_flags,
+                antialiased,
+            )
             kept = self.glyphs.get(key)
             if kept is None:
                 if len(self.glyphs) >= LIMIT:
@@ -146,7 +158,7 @@ class GlyphKeepingRenderer(RendererAgg):
                     )
                     .round()
                     .astype(int),
-                    [px & 63, py & 63],
+                    list(place),
                 )
                 bitmap = font._render_glyph(
                     glyph_index, load_flags, RenderMode.NORMAL if antialiased else RenderMode.MONO
