@@ -170,19 +170,21 @@ def _wait_for_log(text: str, process: subprocess.Popen, log: Path, seconds: floa
 PIDFD_GETFD = 438
 
 
-def socket_inode(local_port: int, remote_port: int) -> str:
-    """The inode of the open TCP connection from ``local_port`` to ``remote_port``."""
+def _tcp_sockets() -> Iterator[tuple[int, int, str, str]]:
+    """Every TCP socket of this machine (IPv4 and IPv6): local port, remote port, state (01:
+    established) and inode (0 for one closing), from Linux's /proc/net tables."""
     for table in ("/proc/net/tcp", "/proc/net/tcp6"):
         for line in Path(table).read_text().splitlines()[1:]:
             fields = line.split()
-            local, remote, state, inode = fields[1], fields[2], fields[3], fields[9]
-            if (
-                state == "01"  # established, not one closing (whose inode is 0)
-                and inode != "0"
-                and int(local.rsplit(":", 1)[1], 16) == local_port
-                and int(remote.rsplit(":", 1)[1], 16) == remote_port
-            ):
-                return inode
+            local, remote = (int(end.rsplit(":", 1)[1], 16) for end in fields[1:3])
+            yield local, remote, fields[3], fields[9]
+
+
+def socket_inode(local_port: int, remote_port: int) -> str:
+    """The inode of the open TCP connection from ``local_port`` to ``remote_port``."""
+    for local, remote, state, inode in _tcp_sockets():
+        if (local, remote, state) == (local_port, remote_port, "01") and inode != "0":
+            return inode
     raise AssertionError(f"no socket from port {local_port} to {remote_port}")
 
 
@@ -214,13 +216,7 @@ def nodelay_of(pid: int, fd: int) -> int:
 
 def server_nodelay(pid: int, port: int) -> list[int]:
     """TCP_NODELAY of every connection that process ``pid`` accepted on ``port``."""
-    inodes = set()
-    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
-        for line in Path(table).read_text().splitlines()[1:]:
-            fields = line.split()
-            established = fields[3] == "01"
-            if established and int(fields[1].rsplit(":", 1)[1], 16) == port:
-                inodes.add(fields[9])
+    inodes = {inode for local, _, state, inode in _tcp_sockets() if (local, state) == (port, "01")}
     values = []
     for fd in os.listdir(f"/proc/{pid}/fd"):
         with contextlib.suppress(OSError):
