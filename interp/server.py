@@ -24,9 +24,9 @@ import functools
 from jupyter_server.services.kernels.websocket import KernelWebsocketHandler
 
 
-def send_at_once(handler: type = KernelWebsocketHandler) -> None:
-    """Make every kernel websocket that ``handler`` opens from now on send without delay
-    (``TCP_NODELAY``). Voilà's handler is a subclass of jupyter_server's, the default.
+def send_at_once() -> None:
+    """Make every kernel websocket the server opens from now on send without delay
+    (``TCP_NODELAY``); Voilà's handler is a subclass of jupyter_server's, so it too.
 
     Examples
     --------
@@ -34,7 +34,7 @@ def send_at_once(handler: type = KernelWebsocketHandler) -> None:
     >>> KernelWebsocketHandler.open.sends_at_once
     True
     """
-    opened = handler.open
+    opened = KernelWebsocketHandler.open
     if getattr(opened, "sends_at_once", False):
         return
 
@@ -44,7 +44,7 @@ def send_at_once(handler: type = KernelWebsocketHandler) -> None:
         return await opened(self, *args, **kw)
 
     open_sending_at_once.sends_at_once = True  # type: ignore[attr-defined]
-    handler.open = open_sending_at_once
+    KernelWebsocketHandler.open = open_sending_at_once
 
 
 def _jupyter_server_extension_points() -> list[dict[str, str]]:
