@@ -260,3 +260,43 @@ def test_with_no_roll_the_lab_plots_no_rounding_errors():
     assert lab.lab.ax.get_title() == "spans: exact at every setting here"
     rolled = shown("approximations", roll=30.0)
     assert len(rolled.lab.spans.get_xdata()) == 6 and rolled.lab.ax.get_title() == ""
+
+
+# --- figure captions read again against the figures at their defaults ----------------------------
+
+
+def test_the_clipping_caption_names_the_planes_that_cut_at_its_default_camera():
+    """The handout's clipping figure: its caption names exactly the planes the outlined pieces'
+    new vertices lie on (at height 0.3 and distance 1, the near plane cuts none of them)."""
+    from interp.clipping import PLANES
+    from interp.raster import fragments
+    from interp.scenes import LESSON_SIZE, ground_plane
+
+    params = shown("clipping").view.params
+    width, height = int(params["width"]), int(params["height"])
+    camera = params["camera"].fitted(width, height)
+    scene = ground_plane(camera, LESSON_SIZE, quads=int(params["quads"]))
+    clip = fragments(scene.clip, scene.uv, scene.triangles, width, height).clipped.clip
+    on_plane = np.abs(clip.reshape(-1, 4) @ PLANES.T) < 1e-9 * np.abs(clip.reshape(-1, 4)[:, 3:])
+    names = np.array(["near", "far", "left", "right", "bottom", "top"])
+    cutting = list(names[on_plane.any(axis=0)])
+    assert cutting == ["left", "right", "bottom"]
+    assert "(at this camera the left, right and bottom planes)" in FIGURES["clipping"].caption
+
+
+def test_the_texture_filtering_caption_describes_its_footprints():
+    """ "About a texel long near the camera, several texels long far away": the footprints the
+    figure draws, at its defaults (none is square: a reviewer found "square" false)."""
+    from interp.plots.filtering import sample_pixels
+
+    panels = shown("texture-filtering").panels
+    views = panels.views
+    height, width = views.lod_image.shape
+    drawn = np.isin(views.fragments.pixel, sample_pixels(width, height, *panels.grid))
+    longer = np.linalg.norm(views.footprints[..., drawn], axis=0).max(axis=0)
+    rows = views.fragments.pixel[drawn] // width
+    near, far = longer[rows == rows.max()], longer[rows == rows.min()]
+    assert 0.75 < near.min() and near.max() < 1.5
+    assert far.min() > 4
+    caption = FIGURES["texture-filtering"].caption
+    assert "about a texel long near the camera, several texels long far away" in caption

@@ -852,8 +852,8 @@ class Clipping(LessonFigure):
     description = "the ground plane from just above it, with the outline of every clipped triangle"
     caption = (
         "With the camera just above the ground and over it, some triangles reach behind it; "
-        "clipping in clip space cuts them against the planes of the view volume (the near "
-        "plane, and the sides where they cross first) into the outlined pieces, and the image "
+        "clipping in clip space cuts them against the planes of the view volume (at this "
+        "camera the left, right and bottom planes) into the outlined pieces, and the image "
         "stays correct. (Lesson 8)"
     )
     size = (6.5, 5.0)
@@ -978,8 +978,8 @@ class TextureFiltering(LessonFigure):
     description = "pixel footprints in the texture, OpenGL's level of detail, the filtered image"
     caption = (
         "Left: the footprints of a grid of pixels in a 256 x 256-texel checkerboard texture "
-        "(parallelograms, drawn enlarged): small and square near the camera, long and thin far "
-        "away. Middle: OpenGL's level of detail λ = log2 of the longer footprint edge in "
+        "(parallelograms, drawn enlarged): about a texel long near the camera, several texels "
+        "long far away. Middle: OpenGL's level of detail λ = log2 of the longer footprint edge in "
         "texels, per pixel, one colour per mipmap level. Right: the image filtered as chosen; by "
         "default trilinear, from the mipmap (GL_LINEAR_MIPMAP_LINEAR). (Lesson 9)"
     )
