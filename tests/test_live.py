@@ -16,6 +16,7 @@ import pytest
 from interp import apps
 from interp.apps._glyphs import keep_glyphs
 from interp.apps._live import Blitter, Coalescer
+from interp.apps._samples import SampledImage, keep_samples
 from interp.plots import styled
 
 #: A control of each app and a step for it.
@@ -85,6 +86,127 @@ def test_kept_glyphs_draw_text_as_matplotlib_does(name):
     assert kept.figure.canvas.get_renderer().glyphs, "no glyph was kept"
     plt.close(kept.figure)
     plt.close(plain.figure)
+
+
+def _plain_images(figure) -> None:
+    """Draw the figure's images as matplotlib does (undo :func:`keep_samples`)."""
+    for ax in figure.axes:
+        for image in ax.images:
+            if isinstance(image, SampledImage):
+                image.__class__ = matplotlib.image.AxesImage
+
+
+#: The apps whose figures show raster images that change (``test_the_image_apps_are_these``).
+IMAGE_APPS = (
+    "barycentrics",
+    "checkerboards",
+    "checkerboards_outside",
+    "clipping",
+    "clipping_outside",
+    "colour_quad",
+    "linear_on_screen",
+    "mipmap_pyramid",
+    "shader",
+    "texture_filtering",
+    "uv_images",
+)
+
+
+def test_the_image_apps_are_these():
+    shown = {
+        name
+        for name, make in apps.ALL.items()
+        if any(isinstance(a, matplotlib.image.AxesImage) for a in make().plot.dynamic or ())
+    }
+    assert shown == set(IMAGE_APPS)
+
+
+@pytest.mark.parametrize("name", IMAGE_APPS)
+def test_kept_samples_draw_images_as_matplotlib_does(name):
+    """A live figure's changing images are picked from a kept map (``_samples``): every app,
+    at three settings of its first slider, is the figure matplotlib draws, pixel for pixel."""
+    kept, plain = apps.ALL[name](), apps.ALL[name]()
+    _plain_images(plain.figure)
+    images = [a for a in kept.plot.dynamic if isinstance(a, matplotlib.image.AxesImage)]
+    if not all(keep_samples(image) for image in images):
+        pytest.skip(f"matplotlib {matplotlib.__version__} is not 3.11: no samples are kept")
+    control = next((n for n, c in kept.controls.items() if hasattr(c, "min")), None)
+    settings = [{}]
+    if control is not None:
+        slider = kept.controls[control]
+        kind = type(slider.value)
+        settings = [{control: kind(v)} for v in np.linspace(slider.min, slider.max, 3)]
+    for values in settings:
+        for app in (kept, plain):
+            app.set(**values)
+            app.figure.canvas.draw()
+        np.testing.assert_array_equal(
+            np.asarray(kept.figure.canvas.buffer_rgba()),
+            np.asarray(plain.figure.canvas.buffer_rgba()),
+            err_msg=f"{name} at {values}",
+        )
+    assert any(picks is not None for i in images for picks in i.samples.values()), (
+        "no image was drawn from a kept map"
+    )
+
+
+def _random_image(rng, kept: bool):
+    """A figure with one image of random shape, kind, values, mask, place and way of
+    drawing; the same for the same state of ``rng``."""
+    figure = matplotlib.figure.Figure(figsize=rng.uniform(1, 5, 2), dpi=rng.choice([72, 100, 150]))
+    matplotlib.backends.backend_agg.FigureCanvasAgg(figure)
+    ax = figure.add_axes([*rng.uniform(0, 0.3, 2), *rng.uniform(0.3, 0.7, 2)])
+    h, w = rng.integers(1, 90, 2)
+    kind = rng.choice(["scalar", "rgb", "rgba"])
+    data = {"scalar": rng.normal(size=(h, w)), "rgb": rng.uniform(size=(h, w, 3))}.get(
+        kind, np.dstack([rng.uniform(size=(h, w, 3)), rng.choice([0.0, 0.4, 1.0], (h, w))])
+    )
+    if rng.uniform() < 0.4:
+        data = np.where(rng.uniform(size=data.shape) < 0.2, np.nan, data)
+    if rng.uniform() < 0.3:
+        data = data.astype(np.float32)
+    options = {
+        "interpolation": "nearest",
+        "origin": rng.choice(["upper", "lower"]),
+        "interpolation_stage": rng.choice(["auto", "data", "rgba"]),
+        "aspect": rng.choice(["auto", "equal"]),
+    }
+    if kind == "scalar":
+        options["cmap"] = rng.choice(["viridis", "gray", "RdBu"])
+        if rng.uniform() < 0.7:
+            options |= {"vmin": -1.0, "vmax": rng.uniform(0, 2)}
+    if rng.uniform() < 0.5:
+        x0, y0 = rng.uniform(-5, 5, 2)
+        options["extent"] = (x0, x0 + rng.choice([-1, 1]) * rng.uniform(1, 9), y0, y0 + 3)
+    image = ax.imshow(data, **options)
+    if rng.uniform() < 0.3:  # the image reaches past the axes, clipped
+        ax.set_xlim(*np.sort(rng.uniform(-3, 60, 2)))
+    if kept:
+        keep_samples(image)
+    return figure, image
+
+
+def test_kept_samples_draw_random_images_as_matplotlib_does():
+    """Images of random shapes, kinds (values, RGB, RGBA with see-through pixels), masks,
+    origins, extents, stages, sizes and clipping: picked from the kept map or drawn by
+    matplotlib, the same pixels as matplotlib's alone."""
+    if not keep_samples(matplotlib.image.AxesImage(matplotlib.figure.Figure().add_subplot())):
+        pytest.skip(f"matplotlib {matplotlib.__version__} is not 3.11: no samples are kept")
+    picked = 0
+    for seed in range(60):
+        (kept, image), (plain, _) = (
+            _random_image(np.random.default_rng(seed), kept=True),
+            _random_image(np.random.default_rng(seed), kept=False),
+        )
+        for figure in (kept, plain):
+            figure.canvas.draw()
+        np.testing.assert_array_equal(
+            np.asarray(kept.canvas.buffer_rgba()),
+            np.asarray(plain.canvas.buffer_rgba()),
+            err_msg=f"seed {seed}",
+        )
+        picked += any(picks is not None for picks in image.samples.values())
+    assert picked >= 30, f"only {picked} of 60 images were drawn from a kept map"
 
 
 def test_changed_limits_redraw_the_whole_figure():

@@ -12,6 +12,9 @@ behind it. These things make that so (measured in the browser by ``make bench-br
   axis limits, legend or size is noticed and redraws everything once.
 - **Kept glyphs.** Text that is drawn is laid out once per string and rendered once per glyph
   and place within a pixel (:mod:`interp.apps._glyphs`), the same pixels as matplotlib's.
+- **Kept samples.** A changing raster image keeps which of its pixels each screen pixel shows
+  (:mod:`interp.apps._samples`) and is coloured and picked instead of resampled; the same
+  pixels as matplotlib's.
 - **Latest value wins.** A slider change only marks the figure out of date; the drawing happens
   once the kernel has taken in the messages already waiting, with the newest values. A drag
   never builds a backlog, and the last value is always drawn. A change that comes when
@@ -51,12 +54,14 @@ import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.image import AxesImage
 from matplotlib.legend import Legend
 from matplotlib.spines import Spine
 from matplotlib.text import Text
 from matplotlib.transforms import Bbox
 
 from interp.apps._glyphs import keep_glyphs
+from interp.apps._samples import keep_samples
 
 #: zlib level of live frames (PIL's default is 6).
 PNG_LEVEL = 1
@@ -142,16 +147,17 @@ def static_key(figure: Figure) -> tuple:
 
 def _viewpoint(ax: object) -> tuple:
     """Where a 3D axes is seen from, which the mouse changes by orbiting and zooming (its
-    panes, grid and ticks are in the saved background); () for 2D axes.
+        panes, grid and ticks are in the saved background); () for 2D axes.
 
-    Examples
-    --------
-    >>> from matplotlib.figure import Figure
-    >>> ax = Figure().add_subplot(projection="3d")
-    >>> before = _viewpoint(ax)
-    >>> ax.view_init(elev=10.0, azim=20.0)
-    >>> _viewpoint(ax) == before
-    False
+        Examples
+        --------
+        >>> from matplotlib.figure import Figure
+    from matplotlib.image import AxesImage
+        >>> ax = Figure().add_subplot(projection="3d")
+        >>> before = _viewpoint(ax)
+        >>> ax.view_init(elev=10.0, azim=20.0)
+        >>> _viewpoint(ax) == before
+        False
     """
     if getattr(ax, "name", "") != "3d":
         return ()
@@ -195,6 +201,9 @@ class Blitter:
         #: Where each other unclipped layer reaches, measured once per frame.
         self._reach_now: dict[int, Bbox] = {}
         self.full_draws = self.blits = 0
+        for artist in dynamic or ():
+            if isinstance(artist, AxesImage):
+                keep_samples(artist)  # which pixel lands where, kept per place
 
     def draw(self) -> None:
         """Show the figure's current state."""
