@@ -6,8 +6,10 @@ through Playwright, at the default figure size (viewport 1500 x 1100, device pix
 
 - step: a keyboard arrow on the focused slider, to the first changed picture on the figure's
   canvas; median and p90 over ``--steps`` steps, each once the previous one has settled;
-- drag: the slider's handle dragged back and forth with the mouse for ``--seconds`` s (a move
-  every 16 ms), counting distinct pictures shown per second while the button is down;
+- drag: the slider's handle dragged back and forth with the mouse for ``--seconds`` s, a move
+  each animation frame as a real mouse's moves arrive (``--drag``), counting distinct pictures
+  shown per second while the button is down ("fps"), and the mouse moves made ("moves", a
+  second);
 - settle: from mouse-up to the last change of the canvas (waiting until nothing changed for
   0.8 s with the kernel idle), and how many pictures were shown after mouse-up;
 - final: whether the picture left on screen is the figure at the final value: the canvas's
@@ -43,6 +45,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import platform
 import statistics
@@ -215,15 +218,61 @@ def step_with_mouse(page, start: tuple[float, float], dx: float, canvas, steps: 
     return result
 
 
-def drag(page, start: tuple[float, float], amplitude: float, seconds: float) -> None:
-    """Hold the button at ``start`` and move back and forth by ``amplitude`` px, a move every
-    16 ms, for ``seconds``; let go a quarter period past a whole number of periods (at
-    ``start`` + ``amplitude``), so the final value differs from the first."""
+#: A drag made in the page, one mouse move per animation frame, as Chrome delivers a real
+#: mouse's moves (it aligns them to frames, at most one each): the pointer and mouse events a
+#: real drag dispatches, to the element under the pointer, with the button held.
+DRAG_JS = """
+([x, y, amplitude, seconds, period]) => new Promise((resolve) => {
+  const fire = (kind, cx, cy, buttons) => {
+    const target = document.elementFromPoint(cx, cy) || document.body;
+    const init = {clientX: cx, clientY: cy, screenX: cx, screenY: cy, bubbles: true,
+                  cancelable: true, composed: true, view: window, button: 0, buttons};
+    target.dispatchEvent(new PointerEvent('pointer' + kind,
+      {...init, pointerId: 1, pointerType: 'mouse', isPrimary: true}));
+    target.dispatchEvent(new MouseEvent('mouse' + kind, init));
+  };
+  let moves = 0;
+  fire('move', x, y, 0);
+  fire('down', x, y, 1);
+  const t0 = performance.now();
+  const frame = (now) => {
+    const t = (now - t0) / 1000;
+    if (t >= seconds) {
+      fire('move', x + amplitude, y, 1);
+      fire('up', x + amplitude, y, 0);
+      resolve(moves + 1);
+      return;
+    }
+    const phase = (t / period) % 1;
+    const tri = phase < 0.25 ? 4 * phase : phase < 0.75 ? 2 - 4 * phase : 4 * phase - 4;
+    fire('move', x + amplitude * tri, y, 1);
+    moves += 1;
+    requestAnimationFrame(frame);
+  };
+  requestAnimationFrame(frame);
+})
+"""
+
+
+def drag(
+    page, start: tuple[float, float], amplitude: float, seconds: float, by: str = "page"
+) -> int:
+    """Hold the button at ``start`` and move back and forth by ``amplitude`` px for
+    ``seconds``; let go a quarter period past a whole number of periods (at ``start`` +
+    ``amplitude``), so the final value differs from the first. The number of moves made.
+
+    ``by="page"``: a move each animation frame, made in the page (:data:`DRAG_JS`), as a
+    real mouse's moves arrive. ``by="playwright"``: ``page.mouse.move`` every 16 ms; each
+    waits for the browser to take the move in, so on a busy 2-core machine the moves come
+    at about 26 a second, and the drag then has fewer new values than a real one."""
     x, y = start
     period = seconds / (int(seconds / 1.2) + 0.25)
+    if by == "page":
+        return page.evaluate(DRAG_JS, [x, y, amplitude, seconds, period])
     page.mouse.move(x, y)
     page.mouse.down()
     t0 = time.perf_counter()
+    moves = 0
     while True:
         t = time.perf_counter() - t0
         if t >= seconds:
@@ -231,18 +280,20 @@ def drag(page, start: tuple[float, float], amplitude: float, seconds: float) -> 
         phase = (t / period) % 1.0
         tri = 4 * phase if phase < 0.25 else 2 - 4 * phase if phase < 0.75 else 4 * phase - 4
         page.mouse.move(x + amplitude * tri, y)
+        moves += 1
         wait = 0.016 - (time.perf_counter() - t0 - t)
         if wait > 0:
             time.sleep(wait)
     page.mouse.move(x + amplitude, y)
     page.mouse.up()
+    return moves + 1
 
 
 def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> dict:
     """Drag, then: fps while the button was down, settle time, pictures after mouse-up, and
     whether the final picture is the figure at the final value (if not, and ``--save``, both
     pictures go to that folder as TAG-shown.png and TAG-truth.png)."""
-    drag(page, start, amplitude, args.seconds)
+    moves = drag(page, start, amplitude, args.seconds, args.drag)
     t_down, t_up = last_input(page, "pointerdown"), last_input(page, "pointerup")
     wait_idle(page, quiet_ms=800, timeout=60)
     during = frames_between(page, canvas, t_down, t_up)
@@ -258,6 +309,7 @@ def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> d
         value_agrees = readout_agrees(readout, values)
     return {
         "fps": len(during) / ((t_up - t_down) / 1000),
+        "moves_per_s": moves / ((t_up - t_down) / 1000),
         "frames_during": len(during),
         "settle_ms": settle,
         "frames_after_release": len(after),
@@ -408,7 +460,7 @@ def bench_lesson(context, base, notebook, names, args, label="", only=None) -> l
 # ---------------------------------------------------------------------------------- output
 
 HEADER = (
-    f"{'app':<28} {'median':>7} {'p90':>7} {'fps':>6} {'settle':>7} {'after':>5} "
+    f"{'app':<28} {'median':>7} {'p90':>7} {'fps':>6} {'moves':>6} {'settle':>7} {'after':>5} "
     f"{'final right?':<14} notes"
 )
 
@@ -428,7 +480,8 @@ def format_row(row: dict) -> str:
         notes.append(f"{row['misses']} steps drew nothing")
     return (
         f"{row['app']:<28} {row['median_ms']:>5.0f}ms {row['p90_ms']:>5.0f}ms "
-        f"{row['fps']:>6.1f} {row['settle_ms']:>5.0f}ms {row['frames_after_release']:>5} "
+        f"{row['fps']:>6.1f} {row.get('moves_per_s', math.nan):>6.1f} "
+        f"{row['settle_ms']:>5.0f}ms {row['frames_after_release']:>5} "
         f"{final:<14} {'; '.join(notes)}"
     )
 
@@ -505,6 +558,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--no-dpr2", action="store_true", help="skip the HiDPI run")
     parser.add_argument("--no-endpoints", action="store_true", help="skip dragging A")
     parser.add_argument(
+        "--drag",
+        choices=("page", "playwright"),
+        default="page",
+        help="how drags move the mouse: a move per animation frame made in the page, as a real"
+        " mouse's arrive (default), or Playwright's page.mouse.move every 16 ms",
+    )
+    parser.add_argument(
         "--tree",
         type=Path,
         default=ROOT,
@@ -536,6 +596,7 @@ def main(argv: list[str] | None = None) -> int:
     print(
         "step: key press -> first changed canvas picture (median, p90 of "
         f"{args.steps}); fps: distinct pictures/s during a {args.seconds:g} s mouse drag; "
+        f"moves: mouse moves/s in it (made by {args.drag}); "
         "settle: mouse-up -> last change; after: pictures shown after mouse-up"
     )
     print(HEADER)
