@@ -18,7 +18,7 @@ import numpy as np
 
 from interp import _checks
 from interp.camera import Camera
-from interp.raster import fragment_values, fragments
+from interp.raster import fragment_values, fragment_values_per_span, fragments
 from interp.scenes import LESSON_SIZE, ground_plane
 from interp.texture import _texel_error
 
@@ -83,10 +83,9 @@ def span_costs(
     pixels = max(len(frags.pixel), 1)
     rows = frags.row_spans[_distinct(frags.row_item, len(frags.row_spans))]
     lengths = rows[:, 1] - rows[:, 0] + 1
+    spans = tuple(_checks.positive_int(n, "spans") for n in spans)
     divides, errors = [], []
-    for n in spans:
-        n = _checks.positive_int(n, "spans")
-        values = fragment_values(frags, "subdivided", n)
+    for n, values in zip(spans, fragment_values_per_span(frags, spans), strict=True):
         errors.append(_mean_texel_error(values, exact, frequency))
         divides.append(float(np.sum(np.minimum(-(-lengths // n) + 1, lengths))) / pixels)
     return Costs(np.array(spans), np.array(divides), np.array(errors))

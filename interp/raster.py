@@ -24,7 +24,7 @@ Images are arrays: row 0 is the *top* of the image (window y = height - 1/2).
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -237,7 +237,7 @@ def interpolate(frags: Fragments, mode: str = "perspective", span: int = 16) -> 
     mode = _checks.choice(mode, "mode", MODES)
     span = _checks.positive_int(span, "span")
     image = np.zeros((frags.height * frags.width, frags.clipped.smooth.shape[2]))
-    for chunk, values in _values_in_chunks(frags, mode, span):
+    for chunk, (values,) in _values_in_chunks(frags, mode, (span,)):
         _scatter(image, frags.pixel[chunk], values.T)
     return image.reshape(frags.height, frags.width, -1)
 
@@ -411,13 +411,49 @@ def fragment_values(frags: Fragments, mode: str = "perspective", span: int = 16)
     >>> fragment_values(f)
     array([[0.5, 1.5]])
     """
+    return fragment_values_per_span(frags, (span,), mode)[0]
+
+
+def fragment_values_per_span(
+    frags: Fragments, spans: tuple[int, ...], mode: str = "subdivided"
+) -> list[np.ndarray]:
+    """:func:`fragment_values` for several span lengths at once: one (K, P) array per span.
+
+    The same values as calling it for each span; what does not depend on the span (gathering
+    each fragment's vertices, where its row's span starts) is done once. With a mode other
+    than ``"subdivided"`` the spans do not matter: one array per span, all the same.
+
+    Examples
+    --------
+    One row of three pixels: spans of 1 pixel are exact everywhere; a span of 5 is exact at the
+    row's ends and affine in between:
+
+    >>> f = fragments([[-1, -1, 0, 1], [3, -3, 0, 3], [-1, 1, 0, 1]], [[0.0], [4.0], [0.0]],
+    ...               [[0, 1, 2]], 6, 1)
+    >>> [v.round(2).tolist() for v in fragment_values_per_span(f, (1, 5))]
+    [[[0.12, 0.4, 0.77]], [[0.12, 0.44, 0.77]]]
+    """
     _check_fragments(frags)
     mode = _checks.choice(mode, "mode", MODES)
-    span = _checks.positive_int(span, "span")
-    values = np.empty((frags.clipped.smooth.shape[2], len(frags.pixel)))
-    for chunk, block in _values_in_chunks(frags, mode, span):
-        values[:, chunk] = block
-    return values
+    if isinstance(spans, (str, bytes)) or not isinstance(spans, Iterable):
+        raise TypeError(
+            f"spans must be a sequence of span lengths (positive integers), got "
+            f"{type(spans).__name__}"
+        )
+    spans = tuple(_checks.positive_int(span, "span") for span in spans)
+    if not spans:
+        raise ValueError("spans must hold at least one span length, got none")
+    shape = (frags.clipped.smooth.shape[2], len(frags.pixel))
+    if mode != "subdivided":
+        values = np.empty(shape)
+        for chunk, (block,) in _values_in_chunks(frags, mode):
+            values[:, chunk] = block
+        return [values] * len(spans)
+    per_span = [np.empty(shape) for _ in spans]
+    for chunk, blocks in _values_in_chunks(frags, mode, spans):
+        for values, block in zip(per_span, blocks, strict=True):
+            values[:, chunk] = block
+    return per_span
 
 
 def fragment_footprints(
@@ -912,36 +948,42 @@ class _RowLines:
             out[..., k] = along_row(k) / one_over_w  # the per-pixel divide
 
 
-def _values_in_chunks(frags: Fragments, mode: str, span: int) -> Iterator[tuple[slice, np.ndarray]]:
-    """The interpolated attributes, (K, n) for n fragments at a time: ``(fragments, values)``.
+def _values_in_chunks(
+    frags: Fragments, mode: str, spans: tuple[int, ...] = (16,)
+) -> Iterator[tuple[slice, list[np.ndarray]]]:
+    """The interpolated attributes, (K, n) for n fragments at a time: ``(fragments, values)``,
+    ``values`` a list with one array per span length of ``spans`` ("subdivided"), else one.
 
     In chunks of about VALUES_CHUNK values, so that the per-fragment gathers and temporaries
-    (several times the result) stay bounded however large the image.
+    (several times the result) stay bounded however large the image. What does not depend on
+    the span length (the gathers, where each row's span starts) is done once for all of them.
     """
     pieces = frags.clipped
     per_vertex = pieces.noperspective if mode == "affine" else _a_over_w_and_one_over_w(pieces)
-    step = max(VALUES_CHUNK // max(per_vertex.shape[2], 1), 1)
+    step = max(VALUES_CHUNK // max(per_vertex.shape[2] * len(spans), 1), 1)
     for start in range(0, len(frags.pixel), step):
         chunk = slice(start, start + step)
         piece, b = frags.piece[chunk], frags.barycentric[:, chunk]
         gathered = _per_fragment(per_vertex, piece)  # (3, K or K + 1, n): one gather
         if mode == "affine":
-            yield chunk, barycentric.noperspective(b, gathered)
+            yield chunk, [barycentric.noperspective(b, gathered)]
             continue
         a_over_w, one_over_w = gathered[:, :-1], gathered[:, -1]
         if mode == "perspective":
-            yield chunk, barycentric.smooth(b, a_over_w, one_over_w)
+            yield chunk, [barycentric.smooth(b, a_over_w, one_over_w)]
             continue
         # Subdivided: exact at anchors every span pixels from the span's first column.
         x = frags.pixel[chunk] % frags.width
         first, last = frags.row_spans[frags.row_item[chunk]].T
-        left = first + (x - first) // span * span
-        right = np.minimum(left + span, last)
         db = np.take(frags.barycentric_dx, piece, axis=1)
-        fraction = np.where(right > left, (x - left) / np.maximum(right - left, 1), 0.0)
-        yield (
-            chunk,
-            barycentric.subdivided(
-                b + (left - x) * db, b + (right - x) * db, fraction, a_over_w, one_over_w
-            ),
-        )
+        blocks = []
+        for span in spans:
+            left = first + (x - first) // span * span
+            right = np.minimum(left + span, last)
+            fraction = np.where(right > left, (x - left) / np.maximum(right - left, 1), 0.0)
+            blocks.append(
+                barycentric.subdivided(
+                    b + (left - x) * db, b + (right - x) * db, fraction, a_over_w, one_over_w
+                )
+            )
+        yield chunk, blocks

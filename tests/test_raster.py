@@ -257,6 +257,48 @@ def test_subdivided_is_exact_at_anchors_and_between_affine_and_correct():
     assert 0 < error(sub) < error(affine)
 
 
+def test_values_per_span_are_the_ray_cast_values_at_anchors_and_affine_between():
+    """Several span lengths at once (what the approximation lab draws), against the ray cast
+    (tests/reference.py): each pixel's value is the exact value at its span's anchors, every N
+    pixels from the row's first and its last, and the straight line between them."""
+    P = interp.perspective(70, 4 / 3, 0.5, 20)
+    view = np.array([[-2.0, -1.0, -2.5], [3.0, -1.2, -14.0], [-1.0, 2.0, -5.0]])
+    clip = np.column_stack([view, np.ones(3)]) @ P.T
+    uv = np.array([[0.0, 0.0], [6.0, 1.0], [1.0, 5.0]])
+    width, height, spans = 48, 36, (1, 3, 8, 64)
+    frags = interp.fragments(clip, uv, [[0, 1, 2]], width, height)
+    seen = render(clip, np.array([[0, 1, 2]]), width, height)
+    exact = seen.values(uv, np.array([[0, 1, 2]]), "perspective")  # (H, W, 2)
+    row, x = frags.pixel // width, frags.pixel % width
+    first, last = frags.row_spans[frags.row_item].T
+    assert not seen.ambiguous[row, first].any() and not seen.ambiguous[row, last].any()
+    got = raster.fragment_values_per_span(frags, spans)
+    for n, values in zip(spans, got, strict=True):
+        left = first + (x - first) // n * n
+        right = np.minimum(left + n, last)
+        t = np.where(right > left, (x - left) / np.maximum(right - left, 1), 0.0)[:, None]
+        expected = exact[row, left] + t * (exact[row, right] - exact[row, left])
+        np.testing.assert_allclose(values.T, expected, atol=1e-9, err_msg=f"span {n}")
+        np.testing.assert_array_equal(values, raster.fragment_values(frags, "subdivided", n))
+    assert not np.allclose(got[2], got[0])  # spans of 8 are not exact
+
+
+@pytest.mark.parametrize(
+    ("spans", "error", "words"),
+    [
+        (8, TypeError, "spans must be a sequence"),
+        ((), ValueError, "spans must hold at least one"),
+        ((4, 0), ValueError, "span"),
+    ],
+)
+def test_values_per_span_refuse_bad_spans(spans, error, words):
+    frags = interp.fragments(
+        [[-1, -1, 0, 1], [1, -1, 0, 1], [-1, 1, 0, 1]], [[0.0]] * 3, [[0, 1, 2]], 4, 4
+    )
+    with pytest.raises(error, match=words):
+        raster.fragment_values_per_span(frags, spans)
+
+
 def test_empty_and_off_screen_scenes():
     values, covered = interp.rasterize(
         np.zeros((0, 4)), np.zeros((0, 2)), np.zeros((0, 3), int), 5, 4
