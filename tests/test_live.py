@@ -425,10 +425,12 @@ def test_an_orbit_of_3d_axes_redraws_everything_once():
     assert_is_full_redraw(figure)
 
 
+@pytest.mark.parametrize("rows", ["none", "up"])
 @pytest.mark.parametrize("shape", [(1, 1), (7, 13), (250, 820)])
-def test_a_live_frame_decodes_to_the_figure_pixel_for_pixel(shape):
+def test_a_live_frame_decodes_to_the_figure_pixel_for_pixel(shape, rows):
     """The frames are PNG files written by the package (``png``), not by PIL: PIL's decoder
-    (and so any browser's) must read back exactly the pixels, transparency included."""
+    (and so any browser's) must read back exactly the pixels, transparency included, with
+    either row filter ("up" wraps around modulo 256 in random pixels)."""
     import io
 
     from PIL import Image
@@ -441,9 +443,30 @@ def test_a_live_frame_decodes_to_the_figure_pixel_for_pixel(shape):
         app.figure.canvas.draw()
         rgba = np.asarray(app.figure.canvas.buffer_rgba())
         assert rgba.shape[:2] == shape
-    decoded = Image.open(io.BytesIO(png(rgba)))
+    decoded = Image.open(io.BytesIO(png(rgba, rows=rows)))
     assert decoded.mode == "RGBA"
     np.testing.assert_array_equal(np.asarray(decoded), rgba)
+
+
+def test_frames_are_written_with_the_filter_that_makes_them_smaller():
+    """A figure of gradients (the colour quad) is sent with "up" rows, a figure of flat
+    colours (the checkerboards) unfiltered; each choice is the smaller file, made again
+    every ``trial`` frames, and a frame between trials uses the last choice."""
+    from interp.apps._live import FrameFilter, png
+
+    for name, best in (("colour_quad", "up"), ("checkerboards_outside", "none")):
+        app = apps.ALL[name]()
+        app.figure.canvas.draw()
+        rgba = np.asarray(app.figure.canvas.buffer_rgba()).copy()
+        sizes = {rows: len(png(rgba, rows=rows)) for rows in ("none", "up")}
+        assert min(sizes, key=sizes.get) == best, sizes
+        frames = FrameFilter(trial=3)
+        assert frames.png(rgba) == png(rgba, rows=best) and frames.rows == best
+        flat = np.full_like(rgba, 255)  # the next frames: no trial, the choice stays
+        assert frames.png(flat) == png(flat, rows=best)
+        assert frames.png(flat) == png(flat, rows=best)
+        assert frames.png(flat) == png(flat, rows="none")  # a trial: unfiltered, no larger
+        assert frames.rows == "none"
 
 
 def test_a_kept_legend_is_the_legend_drawn_again_with_a_curve_behind_it(monkeypatch):
