@@ -136,3 +136,18 @@ def test_a_figure_depends_only_on_its_values_not_on_history(name):
         assert a.get_title() == b.get_title()
         for la, lb in zip(a.lines, b.lines, strict=True):
             np.testing.assert_array_equal(la.get_xydata(), lb.get_xydata())
+
+
+def test_contour_lines_skip_masked_nan_and_infinite_pixels():
+    """``contour_segments`` follows a level where the image has values, and nowhere where it
+    is masked (whatever lies under the mask), NaN or infinite."""
+    from interp.plots.checker import contour_segments
+
+    ramp = np.tile(np.linspace(0.0, 1.0, 11), (4, 1))  # column / 10
+    image = np.ma.masked_array(ramp, mask=np.zeros(ramp.shape, bool))
+    image[:, 7:9] = np.ma.masked  # under the mask: 0.7 and 0.8, crossing 0.75
+    image.data[:, 9] = np.nan
+    image.data[:, 10] = np.inf
+    lines = contour_segments(image, [0.5, 0.75, 0.95])
+    assert len(lines) == 1
+    np.testing.assert_allclose(lines[0][:, 0], 5.0)  # x = column 5, where the ramp is 0.5
