@@ -627,3 +627,44 @@ def test_a_legend_placed_best_moves_with_the_curves():
         blitter.draw()
         assert_is_full_redraw(figure)
     assert blitter.legends == {}
+
+
+@pytest.mark.parametrize(
+    "hinting", ["default", "force_autohint", "no_autohint", "auto", "native", "no_hinting"]
+)
+def test_kept_glyphs_measure_text_as_matplotlib_does(hinting):
+    """A live renderer measures text from kept layouts and glyph boxes (``_glyphs``): width,
+    height and descent equal matplotlib's ``FT2Font.set_text`` measure, for random strings
+    (Greek, symbols, a glyph no font has, a ligature) in three families, bold and italic, five
+    sizes and three resolutions; without hinting, by matplotlib's own measure."""
+    from matplotlib.backends.backend_agg import RendererAgg
+    from matplotlib.font_manager import FontProperties
+
+    if not keep_glyphs(RendererAgg(10, 10, 100)):
+        pytest.skip(f"matplotlib {matplotlib.__version__} is not 3.11: no glyphs are kept")
+    rng = np.random.default_rng(len(hinting))
+    letters = list("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789 .,:;!?()[]|/")
+    letters += [*"-+=*&%'\"ΔλθπΣ≤≥→°·…é", "\u00d7", "\u2212", "\ufb01", "\u6f22"]
+    measured = 0
+    with matplotlib.rc_context({"text.hinting": hinting}), warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # "Glyph ... missing from font(s)"
+        for dpi in (72, 100, 200):
+            kept, plain = RendererAgg(10, 10, dpi), RendererAgg(10, 10, dpi)
+            keep_glyphs(kept)
+            for family in ("DejaVu Sans", "DejaVu Serif", "DejaVu Sans Mono"):
+                for size in (5.0, 8.33, 10.0, 12.0, 14.4):
+                    prop = FontProperties(
+                        family=family,
+                        size=size,
+                        weight=rng.choice(["normal", "bold"]),
+                        style=rng.choice(["normal", "italic"]),
+                    )
+                    for _ in range(4):
+                        text = "".join(rng.choice(letters, rng.integers(1, 30)))
+                        assert kept.get_text_width_height_descent(text, prop, False) == (
+                            plain.get_text_width_height_descent(text, prop, False)
+                        ), (text, family, size, dpi)
+                        measured += 1
+            # Unhinted, set_text's sub-pixel pen differs from the layout's: matplotlib measures.
+            assert bool(kept.boxes) == (hinting != "no_hinting")
+    assert measured == 180

@@ -13,6 +13,12 @@ every app's frames with figures drawn by matplotlib alone). One difference: text
 300,000 pixels off the canvas, which FreeType refuses to render, is rendered here (at its
 place within a pixel) and then falls outside the canvas.
 
+Text is measured (to align it) before it is drawn, and matplotlib measures a string with
+``FT2Font.set_text``, which lays it out once more and loads every glyph: for a title that
+quotes a slider's value, a new string on every step, 1 ms. The renderer measures from the kept
+layout and each glyph's kept box instead, the same numbers (``tests/test_live.py`` compares
+them with matplotlib's for random strings, fonts, sizes and hinting modes).
+
 :class:`GlyphKeepingRenderer` repeats matplotlib 3.11's ``RendererAgg.draw_text`` with the two
 things kept, so it applies to matplotlib 3.11 only; with another version a renderer is left as
 it is.
@@ -25,7 +31,7 @@ import math
 import matplotlib
 import numpy as np
 from matplotlib.backends.backend_agg import RendererAgg, get_hinting_flag
-from matplotlib.ft2font import RenderMode
+from matplotlib.ft2font import LoadFlags, RenderMode
 
 #: Kept layouts and glyph pictures per renderer, at most; then they are dropped and kept anew.
 LIMIT = 20_000
@@ -57,6 +63,7 @@ def keep_glyphs(renderer: RendererAgg) -> bool:
     renderer.__class__ = GlyphKeepingRenderer  # the same object, drawing text from kept glyphs
     renderer.layouts = {}
     renderer.glyphs = {}
+    renderer.boxes = {}
     return True
 
 
@@ -71,10 +78,14 @@ class GlyphKeepingRenderer(RendererAgg):
     glyphs : dict
         (font, size, dpi, glyph, slant, extend, angle, place in the pixel, hinting,
         antialiased) -> the glyph's picture and its corner relative to the whole pixel.
+    boxes : dict
+        (font, size, dpi, glyph, hinting) -> the glyph's bottom and top and its advance, in
+        1/64 pixel, for measuring text.
     """
 
     layouts: dict
     glyphs: dict
+    boxes: dict
 
     def draw_text(
         self,
@@ -94,6 +105,46 @@ class GlyphKeepingRenderer(RendererAgg):
         features = mtext.get_fontfeatures() if mtext is not None else None
         language = mtext.get_language() if mtext is not None else None
         size = prop.get_size_in_points()
+        items = self._laid_out(font, s, size, features, language)
+        glyphs = ((ft_object, size, index, 0, 1, dx, dy) for ft_object, index, dx, dy in items)
+        return self._draw_text_glyphs_and_boxes(gc, x, y, angle, glyphs, [])
+
+    def get_text_width_height_descent(
+        self, s: str, prop: object, ismath: bool | str
+    ) -> tuple[float, float, float]:
+        """``RendererAgg.get_text_width_height_descent``, from the kept layout of ``s`` and
+        each glyph's kept box: the width runs to the pen after the last glyph, the height and
+        descent span the glyphs' boxes, as ``FT2Font.set_text`` measures them (checked against
+        it for every hinting mode but none, where its sub-pixel pen differs; that mode, math,
+        and strings of several lines are measured by matplotlib)."""
+        flags = get_hinting_flag()
+        if ismath or not s or "\n" in s or flags & LoadFlags.NO_HINTING:
+            return super().get_text_width_height_descent(s, prop, ismath)
+        font = self._prepare_font(prop)
+        size = prop.get_size_in_points()
+        items = self._laid_out(font, s, size, None, None)  # set_text's layout: no features
+        if not items:
+            return super().get_text_width_height_descent(s, prop, ismath)
+        low, high = math.inf, -math.inf
+        for ft_object, index, _x, y in items:
+            key = (ft_object, size, self.dpi, index, flags)
+            box = self.boxes.get(key)
+            if box is None:
+                if len(self.boxes) >= LIMIT:
+                    self.boxes.clear()
+                ft_object.set_size(size, self.dpi)
+                glyph = ft_object.load_glyph(index, flags)
+                box = self.boxes[key] = (glyph.bbox[1], glyph.bbox[3], glyph.horiAdvance)
+            bottom, top, advance = box
+            shift = round(y * 64)
+            low, high = min(low, bottom + shift), max(high, top + shift)
+        width = round(items[-1][2] * 64) + advance  # 1/64 pixel: the pen after the last glyph
+        return width / 64, (high - low) / 64, -low / 64
+
+    def _laid_out(
+        self, font: object, s: str, size: float, features: object, language: object
+    ) -> list[tuple]:
+        """The glyphs of ``s`` and their offsets (``FT2Font._layout``), kept per string."""
         key = (font, s, size, self.dpi, get_hinting_flag(), repr(features), repr(language))
         items = self.layouts.get(key)
         if items is None:
@@ -103,8 +154,7 @@ class GlyphKeepingRenderer(RendererAgg):
                 s, flags=get_hinting_flag(), features=features, language=language
             )
             items = self.layouts[key] = [(i.ft_object, i.glyph_index, i.x, i.y) for i in laid_out]
-        glyphs = ((ft_object, size, index, 0, 1, dx, dy) for ft_object, index, dx, dy in items)
-        return self._draw_text_glyphs_and_boxes(gc, x, y, angle, glyphs, [])
+        return items
 
     def _draw_text_glyphs_and_boxes(
         self,
