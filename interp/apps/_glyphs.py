@@ -37,8 +37,8 @@ from matplotlib.ft2font import LoadFlags, RenderMode
 LIMIT = 20_000
 #: The matplotlib whose text drawing :class:`GlyphKeepingRenderer` repeats.
 MATPLOTLIB = (3, 11)
-#: Whether the matplotlib installed is that one.
-_APPLIES = tuple(int(part) for part in matplotlib.__version__.split(".")[:2]) == MATPLOTLIB
+#: Whether the matplotlib installed is that one (``_samples`` repeats the same version's code).
+APPLIES = tuple(int(part) for part in matplotlib.__version__.split(".")[:2]) == MATPLOTLIB
 
 
 def keep_glyphs(renderer: RendererAgg) -> bool:
@@ -58,7 +58,7 @@ def keep_glyphs(renderer: RendererAgg) -> bool:
     """
     if isinstance(renderer, GlyphKeepingRenderer):
         return True
-    if type(renderer) is not RendererAgg or not _APPLIES:
+    if type(renderer) is not RendererAgg or not APPLIES:
         return False
     renderer.__class__ = GlyphKeepingRenderer  # the same object, drawing text from kept glyphs
     renderer.layouts = {}

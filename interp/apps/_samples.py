@@ -22,15 +22,12 @@ matplotlib's, pixel for pixel.
 
 from __future__ import annotations
 
-import matplotlib
 import numpy as np
 from matplotlib import colors
 from matplotlib.image import AxesImage, _resample
 from matplotlib.transforms import Affine2D, Bbox, IdentityTransform, TransformedBbox
 
-#: The matplotlib whose image drawing :class:`SampledImage` repeats.
-MATPLOTLIB = (3, 11)
-_APPLIES = tuple(int(part) for part in matplotlib.__version__.split(".")[:2]) == MATPLOTLIB
+from interp.apps._glyphs import APPLIES  # the same matplotlib, 3.11
 
 
 def keep_samples(image: AxesImage) -> bool:
@@ -53,7 +50,7 @@ def keep_samples(image: AxesImage) -> bool:
     """
     if isinstance(image, SampledImage):
         return True
-    if type(image) is not AxesImage or not _APPLIES:
+    if type(image) is not AxesImage or not APPLIES:
         return False
     image.__class__ = SampledImage  # the same object, drawn from its kept map
     image.samples = {}
