@@ -273,7 +273,8 @@ def chromium(playwright):
 # is about to be painted, at most one per display frame; identical redraws are not counted.
 # Input events (key and pointer) are recorded with their ``timeStamp``, on the same clock, and
 # so is every ``toDataURL`` call, with the URL it made and whether ipympl's frame handler made
-# it (``probe.dataUrls``, the last 40).
+# it (``probe.dataUrls``, the last 40); and so is each frame decoded, with how
+# (``probe.decodes``: an ``<img>`` given a blob URL, ``ImageDecoder`` or ``createImageBitmap``).
 
 FRAME_PROBE = r"""
 (() => {
@@ -317,6 +318,31 @@ FRAME_PROBE = r"""
     probe.dataUrls.push({t: performance.now(), url, inFrame});
     if (probe.dataUrls.length > 40) probe.dataUrls.shift();
     return url;
+  };
+  // How frames are decoded: <img> elements given a blob URL (ipympl's way), and decodes by
+  // WebCodecs' ImageDecoder or createImageBitmap (interp.apps._live.FRAME_JS's), with times.
+  probe.decodes = [];
+  const src = Object.getOwnPropertyDescriptor(HTMLImageElement.prototype, 'src');
+  Object.defineProperty(HTMLImageElement.prototype, 'src', {
+    ...src,
+    set(value) {
+      if (String(value).startsWith('blob:')) {
+        probe.decodes.push({t: performance.now(), by: 'img'});
+      }
+      src.set.call(this, value);
+    },
+  });
+  if (window.ImageDecoder) {
+    const decode = ImageDecoder.prototype.decode;
+    ImageDecoder.prototype.decode = function (...args) {
+      probe.decodes.push({t: performance.now(), by: 'ImageDecoder'});
+      return decode.apply(this, args);
+    };
+  }
+  const createImageBitmap = window.createImageBitmap;
+  window.createImageBitmap = function (...args) {
+    probe.decodes.push({t: performance.now(), by: 'createImageBitmap'});
+    return createImageBitmap.apply(this, args);
   };
   for (const type of ['keydown', 'pointerdown', 'pointermove', 'pointerup']) {
     window.addEventListener(type, (e) => probe.inputs.push({type, t: e.timeStamp}), true);

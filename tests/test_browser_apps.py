@@ -331,6 +331,66 @@ def test_frames_are_not_encoded_again_until_they_stop(lesson, request):
     assert on_show in after, "the picture on show was not encoded once the frames stopped"
 
 
+#: Run before the page's own scripts: a page without WebCodecs (an insecure context, a browser
+#: that has no ``ImageDecoder``).
+NO_IMAGE_DECODER = "delete window.ImageDecoder;"
+
+
+@pytest.mark.parametrize("decoder", ["ImageDecoder", "createImageBitmap"])
+def test_frames_are_decoded_off_the_main_thread(browser, lab, lesson, request, decoder):
+    """ipympl loads each frame as an ``<img>`` from a blob URL and decodes it on the main
+    thread when it draws it; the apps' page script (``interp.apps._live.FRAME_JS``) decodes
+    an app's whole frames with WebCodecs' ``ImageDecoder`` where the page has it, else
+    ``createImageBitmap``, off the main thread. While a slider is dragged every frame is
+    decoded so, no ``<img>`` is loaded, and the picture once they settle is the figure at the
+    slider's final value (the same pixels as ipympl's way: the app's figure drawn afresh)."""
+    name = "st_mapping"
+    if decoder == "ImageDecoder":
+        page, counts = lesson(LESSON_OF[name])
+        context = None
+    else:  # a page of its own, without ImageDecoder, on a copy of the lesson (its own kernel)
+        context = browser.new_context(viewport={"width": 1500, "height": 1100})
+        context.add_init_script(NO_IMAGE_DECODER)
+        context.add_init_script(FRAME_PROBE)
+        page = new_page(context)
+        page.goto(f"{lab}/lab?reset")
+        page.wait_for_selector("#jp-main-dock-panel", timeout=60_000)
+        copy = page.evaluate(
+            "async (path) => (await window.jupyterapp.serviceManager.contents.copy(path, '')).path",
+            LESSON_OF[name],
+        )
+        counts = open_lesson(page, lab, copy)
+    request.node.page_on_show = page
+    try:
+        root = app_root(page, name)
+        canvas = figure_canvas(root)
+        assert page.evaluate("typeof window.ImageDecoder") == (
+            "function" if decoder == "ImageDecoder" else "undefined"
+        )
+        control = slider_for(root, figure_of(name).PARAMS[CONTROL[name]].label)
+        control.scroll_into_view_if_needed()
+        start = page.evaluate("performance.now()")
+        for dx in (40, -40, 40):
+            drag_by(page, control.locator(".noUi-handle"), dx)
+        wait_idle(page, quiet_ms=800, timeout=60)
+        frames = page.evaluate(
+            "([c, a]) => window.__probe.of(c).filter(f => f.t > a).length",
+            [canvas.element_handle(), start],
+        )
+        ways = page.evaluate(
+            "a => window.__probe.decodes.filter(e => e.t > a).map(e => e.by)", start
+        )
+        assert frames >= 4, f"only {frames} pictures while dragging"
+        assert "img" not in ways, f"{ways.count('img')} of {len(ways)} frames loaded as <img>"
+        assert ways.count(decoder) >= frames, f"{frames} pictures, decoded: {ways}"
+        assert_is_the_apps_figure(page, canvas, counts[name], "after the drags")
+        assert_no_errors(page)
+    finally:
+        if context is not None:
+            shutdown_kernel(page)
+            context.close()
+
+
 @pytest.mark.parametrize("notebook", FLAKY_LESSONS)
 def test_run_all_draws_every_figure_every_time(browser, lab, request, notebook):
     """Run All in a fresh kernel, again and again: every figure appears every time. (A first

@@ -312,7 +312,7 @@ def test_a_frame_before_any_view_is_ready_keeps_the_static_picture():
     from matplotlib.figure import Figure
     from PIL import Image
 
-    from interp.apps._live import cheap_frames
+    from interp.apps._live import WHOLE_FRAMES, cheap_frames
 
     backend = matplotlib.get_backend()
     try:
@@ -327,6 +327,7 @@ def test_a_frame_before_any_view_is_ready_keeps_the_static_picture():
     canvas = figure.canvas
     assert canvas.syncing_data_url  # no view yet
     cheap_frames(canvas)
+    assert WHOLE_FRAMES in canvas._dom_classes  # the page may decode its frames off-thread
     canvas.draw()  # sends a frame
     picture = Image.open(io.BytesIO(base64.b64decode(canvas._data_url))).convert("RGBA")
     np.testing.assert_array_equal(np.asarray(picture), np.asarray(canvas.buffer_rgba()))
