@@ -16,6 +16,11 @@ through Playwright, at the default figure size (viewport 1500 x 1100, device pix
   pixels against the same app drawn afresh in the kernel at its controls' values
   (``browser.TRUTH``), and the slider's readout against the kernel's value.
 
+First the floor under every app: a slider whose value the kernel writes into a text label
+(:data:`FLOOR_CELL`), stepped with the keyboard as the apps are, to the animation frame that
+shows the kernel's answer. It is the round trip every step makes (JupyterLab, the Jupyter
+server, the kernel and back) without a figure: an app's step cannot be faster.
+
 For lessons 1-2 the same again with endpoint A dragged by the mouse in the figure (small
 mouse moves with the button held, instead of key presses). And once more for the
 checkerboards of lesson 6 (its first app) at device pixel ratio 2 (a HiDPI screen).
@@ -457,6 +462,62 @@ def bench_lesson(context, base, notebook, names, args, label="", only=None) -> l
     return rows
 
 
+# ----------------------------------------------------------------------------- the floor
+
+#: The floor under every app: a slider whose value the kernel writes into a text label, no
+#: figure. A step is the same round trip an app's step makes (the key press, the slider's
+#: message to the kernel, the kernel's answer, the page showing it), without any drawing.
+FLOOR_CELL = """\
+import ipywidgets as widgets
+slider = widgets.IntSlider(value=50, min=0, max=100, description="floor")
+label = widgets.Label("50")
+label.add_class("interp-floor")
+slider.observe(lambda change: setattr(label, "value", str(change["new"])), "value")
+widgets.HBox([slider, label])
+"""
+
+#: When the label's text changes: the animation frame after, as the probe times pictures.
+FLOOR_PROBE = """() => {
+    window.__floor = [];
+    const label = document.querySelector('.interp-floor');
+    new MutationObserver(() => requestAnimationFrame(() => window.__floor.push(performance.now())))
+        .observe(label, {subtree: true, childList: true, characterData: true});
+}"""
+
+
+def bench_floor(context, base: str, folder: Path, steps: int) -> dict:
+    """Key presses on the floor's slider (:data:`FLOOR_CELL`), each to the frame that shows the
+    kernel's answer: the part of every app's step that is not its figure's."""
+    import nbformat
+
+    notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(FLOOR_CELL)])
+    notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3"}
+    nbformat.write(notebook, folder / "interp_floor.ipynb")
+    page = new_page(context)
+    try:
+        open_lesson(page, base, "interp_floor.ipynb", drawn_within=1)
+        page.evaluate(FLOOR_PROBE)
+        page.locator(".interp-floor").wait_for()
+        page.locator(".widget-slider .noUi-handle").first.focus()
+        latencies, misses = [], 0
+        for i in range(steps):
+            page.keyboard.press("ArrowRight" if i % 2 == 0 else "ArrowLeft")
+            t_in = last_input(page, "keydown")
+            try:
+                page.wait_for_function(
+                    "t => window.__floor.some(x => x > t)", arg=t_in, polling="raf", timeout=10_000
+                )
+                shown = page.evaluate("t => window.__floor.find(x => x > t)", t_in)
+                latencies.append(shown - t_in)
+            except Exception:  # playwright's TimeoutError
+                misses += 1
+            wait_idle(page, quiet_ms=100)
+        return {"app": "floor: slider -> text", "floor": True, **summary(latencies, misses)}
+    finally:
+        shutdown_kernels(page)
+        page.close()
+
+
 # ---------------------------------------------------------------------------------- output
 
 HEADER = (
@@ -470,6 +531,12 @@ def format_row(row: dict) -> str:
         return f"{row['app']:<28} not measured: it has no slider"
     if "error" in row:
         return f"{row['app']:<28} failed: {row['error']}"
+    if row.get("floor"):
+        return (
+            f"{row['app']:<28} {row['median_ms']:>5.0f}ms {row['p90_ms']:>5.0f}ms "
+            f"{'':>6} {'':>6} {'':>7} {'':>5} {'':<14} no figure: the round trip every step makes"
+            + (f"; {row['misses']} steps showed nothing" if row.get("misses") else "")
+        )
     final = "yes" if row["final_right"] else f"NO ({row['final_mismatch']:.1%} px)"
     if not row["readout_agrees"]:
         final = "NO (readout)"
@@ -558,6 +625,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--no-dpr2", action="store_true", help="skip the HiDPI run")
     parser.add_argument("--no-endpoints", action="store_true", help="skip dragging A")
     parser.add_argument(
+        "--no-floor", action="store_true", help="skip the floor (a slider and a text label)"
+    )
+    parser.add_argument(
         "--drag",
         choices=("page", "playwright"),
         default="page",
@@ -606,6 +676,9 @@ def main(argv: list[str] | None = None) -> int:
             browser = chromium(playwright)
             context = browser.new_context(viewport=VIEWPORT)
             context.add_init_script(FRAME_PROBE)
+            if not args.no_floor:
+                rows.append(bench_floor(context, base, Path(tmp) / "lessons", args.steps))
+                print(format_row(rows[-1]), flush=True)
             for notebook, names in lessons(args.tree).items():
                 if args.only and not set(names) & set(args.only):
                     continue
