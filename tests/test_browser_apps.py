@@ -299,6 +299,30 @@ def test_dragging_endpoint_a_moves_the_figure(lesson, request, name):
     assert_no_errors(page)
 
 
+def drag_back_and_forth(page, root, name: str) -> float:
+    """Drag app ``name``'s first slider right, left and right again, and wait until things
+    settle; the page's time (``performance.now()``) just before the first drag."""
+    control = slider_for(root, figure_of(name).PARAMS[CONTROL[name]].label)
+    control.scroll_into_view_if_needed()
+    start = page.evaluate("performance.now()")
+    for dx in (40, -40, 40):
+        drag_by(page, control.locator(".noUi-handle"), dx)
+    wait_idle(page, quiet_ms=800, timeout=60)
+    return start
+
+
+def open_lesson_copy(page, lab: str, notebook: str) -> dict[str, int]:
+    """Run All in a copy of ``notebook`` on ``page`` (:func:`open_lesson`), so that it gets a
+    kernel of its own: JupyterLab connects every page that opens one path to the same kernel."""
+    page.goto(f"{lab}/lab?reset")
+    page.wait_for_selector("#jp-main-dock-panel", timeout=60_000)
+    copy = page.evaluate(
+        "async (path) => (await window.jupyterapp.serviceManager.contents.copy(path, '')).path",
+        notebook,
+    )
+    return open_lesson(page, lab, copy)
+
+
 def test_frames_are_not_encoded_again_until_they_stop(lesson, request):
     """ipympl's view encoded its whole picture as a PNG data URL on every frame it received
     (13 ms of the browser's main thread for an 820 x 474 figure), for a picture read only
@@ -311,12 +335,7 @@ def test_frames_are_not_encoded_again_until_they_stop(lesson, request):
     request.node.page_on_show = page
     root = app_root(page, name)
     canvas = figure_canvas(root).element_handle()
-    control = slider_for(root, figure_of(name).PARAMS[CONTROL[name]].label)
-    control.scroll_into_view_if_needed()
-    start = page.evaluate("performance.now()")
-    for dx in (40, -40, 40):
-        drag_by(page, control.locator(".noUi-handle"), dx)
-    wait_idle(page, quiet_ms=800, timeout=60)
+    start = drag_back_and_forth(page, root, name)
     frames = page.evaluate(
         "([c, a]) => window.__probe.of(c).filter(f => f.t > a).map(f => f.t)", [canvas, start]
     )
@@ -353,13 +372,7 @@ def test_frames_are_decoded_off_the_main_thread(browser, lab, lesson, request, d
         context.add_init_script(NO_IMAGE_DECODER)
         context.add_init_script(FRAME_PROBE)
         page = new_page(context)
-        page.goto(f"{lab}/lab?reset")
-        page.wait_for_selector("#jp-main-dock-panel", timeout=60_000)
-        copy = page.evaluate(
-            "async (path) => (await window.jupyterapp.serviceManager.contents.copy(path, '')).path",
-            LESSON_OF[name],
-        )
-        counts = open_lesson(page, lab, copy)
+        counts = open_lesson_copy(page, lab, LESSON_OF[name])
     request.node.page_on_show = page
     try:
         root = app_root(page, name)
@@ -367,12 +380,7 @@ def test_frames_are_decoded_off_the_main_thread(browser, lab, lesson, request, d
         assert page.evaluate("typeof window.ImageDecoder") == (
             "function" if decoder == "ImageDecoder" else "undefined"
         )
-        control = slider_for(root, figure_of(name).PARAMS[CONTROL[name]].label)
-        control.scroll_into_view_if_needed()
-        start = page.evaluate("performance.now()")
-        for dx in (40, -40, 40):
-            drag_by(page, control.locator(".noUi-handle"), dx)
-        wait_idle(page, quiet_ms=800, timeout=60)
+        start = drag_back_and_forth(page, root, name)
         frames = page.evaluate(
             "([c, a]) => window.__probe.of(c).filter(f => f.t > a).length",
             [canvas.element_handle(), start],
@@ -405,14 +413,7 @@ def test_run_all_draws_every_figure_every_time(browser, lab, request, notebook):
         for run in range(1, REPEAT + 1):
             page = new_page(context)
             request.node.page_on_show = page
-            page.goto(f"{lab}/lab?reset")
-            page.wait_for_selector("#jp-main-dock-panel", timeout=60_000)
-            copy = page.evaluate(
-                "async (path) => (await window.jupyterapp.serviceManager.contents"
-                ".copy(path, '')).path",
-                notebook,
-            )
-            counts = open_lesson(page, lab, copy)
+            counts = open_lesson_copy(page, lab, notebook)
             for name in LESSONS[notebook]:
                 try:
                     canvas = figure_canvas(app_root(page, name))
