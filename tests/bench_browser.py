@@ -186,15 +186,15 @@ def first_frame_after(page, canvas, t: float, timeout: float = 10.0) -> float | 
 # ------------------------------------------------------------------------------ the actions
 
 
-def timed_steps(page, canvas, act, event: str, steps: int) -> tuple[list[float], int]:
+def timed_steps(page, shown_after, act, event: str, steps: int) -> tuple[list[float], int]:
     """``act(i)`` for i = 1 to ``steps``, each after the last has settled: the latencies (ms)
-    from the input ``event`` to the first changed picture, and how many steps changed nothing
-    within 10 s."""
+    from the input ``event`` to what ``shown_after(t)`` finds first shown after page time t
+    (:func:`first_frame_after` a figure's canvas), and how many steps showed nothing."""
     latencies, misses = [], 0
     for i in range(1, steps + 1):
         act(i)
         t_in = last_input(page, event)
-        shown = first_frame_after(page, canvas, t_in)
+        shown = shown_after(t_in)
         if shown is None:
             misses += 1
         else:
@@ -206,7 +206,13 @@ def timed_steps(page, canvas, act, event: str, steps: int) -> tuple[list[float],
 def step_with_keys(page, handle, canvas, key: str, steps: int) -> tuple[list[float], int]:
     """Press ``key`` on the focused slider handle ``steps`` times (:func:`timed_steps`)."""
     handle.focus()
-    return timed_steps(page, canvas, lambda i: page.keyboard.press(key), "keydown", steps)
+    return timed_steps(
+        page,
+        lambda t: first_frame_after(page, canvas, t),
+        lambda i: page.keyboard.press(key),
+        "keydown",
+        steps,
+    )
 
 
 def step_with_mouse(page, start: tuple[float, float], dx: float, canvas, steps: int):
@@ -216,7 +222,11 @@ def step_with_mouse(page, start: tuple[float, float], dx: float, canvas, steps: 
     page.mouse.down()
     wait_idle(page, quiet_ms=150)
     result = timed_steps(
-        page, canvas, lambda i: page.mouse.move(x + dx * i, y), "pointermove", steps
+        page,
+        lambda t: first_frame_after(page, canvas, t),
+        lambda i: page.mouse.move(x + dx * i, y),
+        "pointermove",
+        steps,
     )
     page.mouse.up()
     wait_idle(page, quiet_ms=300)
@@ -485,6 +495,18 @@ FLOOR_PROBE = """() => {
 }"""
 
 
+def first_text_after(page, t: float, timeout: float = 10.0) -> float | None:
+    """Wait for the floor's label to change after page time ``t`` (:data:`FLOOR_PROBE`); the
+    frame's time, or None if it did not."""
+    try:
+        page.wait_for_function(
+            "t => window.__floor.some(x => x > t)", arg=t, timeout=timeout * 1000, polling="raf"
+        )
+    except Exception:  # playwright's TimeoutError
+        return None
+    return page.evaluate("t => window.__floor.find(x => x > t)", t)
+
+
 def bench_floor(context, base: str, folder: Path, steps: int) -> dict:
     """Key presses on the floor's slider (:data:`FLOOR_CELL`), each to the frame that shows the
     kernel's answer: the part of every app's step that is not its figure's."""
@@ -496,22 +518,16 @@ def bench_floor(context, base: str, folder: Path, steps: int) -> dict:
     page = new_page(context)
     try:
         open_lesson(page, base, "interp_floor.ipynb", drawn_within=1)
-        page.evaluate(FLOOR_PROBE)
         page.locator(".interp-floor").wait_for()
+        page.evaluate(FLOOR_PROBE)
         page.locator(".widget-slider .noUi-handle").first.focus()
-        latencies, misses = [], 0
-        for i in range(steps):
-            page.keyboard.press("ArrowRight" if i % 2 == 0 else "ArrowLeft")
-            t_in = last_input(page, "keydown")
-            try:
-                page.wait_for_function(
-                    "t => window.__floor.some(x => x > t)", arg=t_in, polling="raf", timeout=10_000
-                )
-                shown = page.evaluate("t => window.__floor.find(x => x > t)", t_in)
-                latencies.append(shown - t_in)
-            except Exception:  # playwright's TimeoutError
-                misses += 1
-            wait_idle(page, quiet_ms=100)
+        latencies, misses = timed_steps(
+            page,
+            lambda t: first_text_after(page, t),
+            lambda i: page.keyboard.press("ArrowRight" if i % 2 else "ArrowLeft"),
+            "keydown",
+            steps,
+        )
         return {"app": "floor: slider -> text", "floor": True, **summary(latencies, misses)}
     finally:
         shutdown_kernels(page)
