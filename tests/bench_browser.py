@@ -31,8 +31,8 @@ drop-down list alone) is listed as not measured.
 
 Times are measured in the page, with ``performance.now()``: the input event's ``timeStamp``
 and the animation frame at which the canvas's pixels first differ (``browser.FRAME_PROBE``:
-``drawImage`` into a figure canvas marks it, a requestAnimationFrame loop hashes marked
-canvases once per frame). So "frames" are distinct pictures about to be painted, at most one
+``drawImage`` into a figure canvas marks it and asks for the next animation frame, which
+hashes the marked canvases). So "frames" are distinct pictures about to be painted, at most one
 per display frame; Playwright's round trips are not in the figures.
 
 The machine is shared and noisy: the output starts with the CPU count and load average, before

@@ -267,14 +267,15 @@ def chromium(playwright):
 # What the page itself measures (tests/bench_browser.py and tests/test_browser_apps.py): an
 # init script hooks ``drawImage`` on the 2D context of every ipympl figure canvas (the first
 # <canvas> in ``.jupyter-matplotlib-canvas-div``: ipympl paints each new image into it with
-# drawImage) and marks the canvas dirty; a requestAnimationFrame loop hashes the pixels of the
-# dirty canvases once per animation frame and records ``{t, h}`` with ``performance.now()``
-# whenever they differ from the last recorded frame. So a "frame" is a distinct picture as it
-# is about to be painted, at most one per display frame; identical redraws are not counted.
-# Input events (key and pointer) are recorded with their ``timeStamp``, on the same clock, and
-# so is every ``toDataURL`` call, with the URL it made and whether ipympl's frame handler made
-# it (``probe.dataUrls``, the last 40); and so is each frame decoded, with how
-# (``probe.decodes``: an ``<img>`` given a blob URL, ``ImageDecoder`` or ``createImageBitmap``).
+# drawImage) and marks the canvas dirty; at the next animation frame (asked for then, not every
+# frame: the probe must not keep the page drawing) it hashes the pixels of the dirty canvases
+# and records ``{t, h}`` with ``performance.now()`` whenever they differ from the last recorded
+# frame. So a "frame" is a distinct picture as it is about to be painted, at most one per
+# display frame; identical redraws are not counted. Input events (key and pointer) are
+# recorded with their ``timeStamp``, on the same clock, and so is every ``toDataURL`` call,
+# with the URL it made and whether ipympl's frame handler made it (``probe.dataUrls``, the
+# last 40); and so is each frame decoded, with how (``probe.decodes``: an ``<img>`` given a
+# blob URL, ``ImageDecoder`` or ``createImageBitmap``).
 
 FRAME_PROBE = r"""
 (() => {
@@ -283,10 +284,20 @@ FRAME_PROBE = r"""
   const isFigure = (c) => !!c && !!c.parentElement
       && c.parentElement.classList.contains('jupyter-matplotlib-canvas-div')
       && c === c.parentElement.firstElementChild;
+  // A figure drawn into is looked at in the next animation frame, when what was drawn shows.
+  // Only then: a callback every frame would keep the page drawing frames (and its compositor
+  // and GPU process busy) while it waits, which a student's page does not do.
+  let ticking = false;
   const drawImage = CanvasRenderingContext2D.prototype.drawImage;
   CanvasRenderingContext2D.prototype.drawImage = function (...args) {
     const result = drawImage.apply(this, args);
-    if (isFigure(this.canvas)) probe.dirty.add(this.canvas);
+    if (isFigure(this.canvas)) {
+      probe.dirty.add(this.canvas);
+      if (!ticking) {
+        ticking = true;
+        requestAnimationFrame(tick);
+      }
+    }
     return result;
   };
   probe.hash = (c) => {
@@ -305,9 +316,8 @@ FRAME_PROBE = r"""
       if (!list.length || list[list.length - 1].h !== h) list.push({t: now, h});
     }
     probe.dirty.clear();
-    requestAnimationFrame(tick);
+    ticking = false;
   };
-  requestAnimationFrame(tick);
   // When pictures of a canvas are encoded as data URLs (ipympl did it on every frame).
   probe.dataUrls = [];
   const toDataURL = HTMLCanvasElement.prototype.toDataURL;
