@@ -4,6 +4,8 @@ drawn once, with the newest values."""
 from __future__ import annotations
 
 import asyncio
+import platform
+import sys
 import threading
 import time
 import warnings
@@ -418,17 +420,30 @@ def test_an_orbit_of_3d_axes_redraws_everything_once():
     assert_is_full_redraw(figure)
 
 
+@pytest.mark.parametrize("by", ["isal", "zlib"])
 @pytest.mark.parametrize("rows", ["none", "up"])
 @pytest.mark.parametrize("shape", [(1, 1), (7, 13), (250, 820)])
-def test_a_live_frame_decodes_to_the_figure_pixel_for_pixel(shape, rows):
+def test_a_live_frame_decodes_to_the_figure_pixel_for_pixel(shape, rows, by, monkeypatch):
     """The frames are PNG files written by the package (``png``), not by PIL: PIL's decoder
     (and so any browser's) must read back exactly the pixels, transparency included, with
-    either row filter ("up" wraps around modulo 256 in random pixels)."""
+    either row filter ("up" wraps around modulo 256 in random pixels), deflated by ISA-L or,
+    where it is not installed, by zlib."""
     import io
+    import zlib
 
     from PIL import Image
 
+    from interp.apps import _live
     from interp.apps._live import png
+
+    if by == "zlib":
+        monkeypatch.setattr(_live, "deflate", zlib.compress)
+    elif sys.platform == "linux" and platform.machine() in ("x86_64", "aarch64"):
+        from isal.isal_zlib import compress  # pyproject.toml installs ISA-L here
+
+        assert _live.deflate is compress
+    else:
+        pytest.skip("ISA-L is installed on Linux (x86_64, aarch64), Windows and macOS (arm64)")
 
     rgba = np.random.default_rng(shape[1]).integers(0, 256, (*shape, 4), dtype=np.uint8)
     if shape == (250, 820):  # a real frame: the checkerboard app's figure
