@@ -40,21 +40,27 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-# An editable install leaves out the package's data files: the file that enables the server
-# extension interp.server (kernel messages sent to the page without delay) is copied by hand,
-# unless it is there (`jupyter server extension disable interp.server` writes it, and stays).
+# An editable install leaves out the package's data files: the two Jupyter settings the package
+# ships are copied by hand, unless they are there. One enables the server extension interp.server
+# (kernel messages sent to the page without delay; `jupyter server extension disable interp.server`
+# turns it off). The other turns off JupyterLab's busy tab icon, which the page swaps and fetches
+# from the server twice per slider step (`jupyter labextension enable
+# @jupyterlab/application-extension:faviconbusy` turns it back on).
 SERVER_CONFIG := $(VENV)/etc/jupyter/jupyter_server_config.d/interp.server.json
-ENABLE_SERVER := test -e $(SERVER_CONFIG) || install -D -m 644 \
-	jupyter-config/jupyter_server_config.d/interp.server.json $(SERVER_CONFIG)
+LAB_CONFIG := $(VENV)/etc/jupyter/labconfig/page_config.d/interp.json
+JUPYTER_SETTINGS := test -e $(SERVER_CONFIG) || install -D -m 644 \
+	jupyter-config/jupyter_server_config.d/interp.server.json $(SERVER_CONFIG); \
+	test -e $(LAB_CONFIG) || install -D -m 644 \
+	jupyter-config/labconfig/page_config.d/interp.json $(LAB_CONFIG)
 
 $(RUNTIME): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e .
-	$(ENABLE_SERVER)
+	$(JUPYTER_SETTINGS)
 	touch $@
 
 $(VENV)/.installed-%: pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e ".[$*]"
-	$(ENABLE_SERVER)
+	$(JUPYTER_SETTINGS)
 	touch $@
 
 $(NBGRADER_DONE): pyproject.toml

@@ -155,6 +155,10 @@ def test_checkerboard_lesson_moves_with_its_camera_slider(lab, page):
     pitch = slider(page, "pitch (deg)")
     pitch.scroll_into_view_if_needed()
     value_before = pitch.locator(".widget-readout").inner_text()
+    # JupyterLab's busy tab icon is off (jupyter-config/labconfig): with it, each step of the
+    # drag swapped the icon to busy and back, and the page fetched it from the server.
+    icons = []
+    page.on("request", lambda r: "/favicons/" in r.url and icons.append(r.url))
     drag_handle(page, pitch, 25)
     wait_until_changed(canvas, before)
     # The first change seen can be a few pixels (the page scrolled to the slider): measure the
@@ -162,6 +166,8 @@ def test_checkerboard_lesson_moves_with_its_camera_slider(lab, page):
     after = wait_until_drawn(canvas)
     assert pitch.locator(".widget-readout").inner_text() != value_before
     assert np.mean(np.any(after != before, axis=2)) > 0.05, "too little of the figure changed"
+    assert icons == []
+    assert page.locator('link[rel="icon"]').get_attribute("class") == "idle favicon"
     assert_no_errors(page)
 
 

@@ -1,5 +1,8 @@
-"""The server extension ``interp.server``: a real JupyterLab server, installed as ``make`` installs
-it, sends kernel messages over a websocket with ``TCP_NODELAY`` set.
+"""The Jupyter settings the package installs, read from a real JupyterLab server installed as
+``make`` installs it.
+
+The server extension ``interp.server`` sends kernel messages over a websocket with
+``TCP_NODELAY`` set.
 
 The option is read from the server's own socket (Linux: ``pidfd_getfd`` copies the socket into
 this process), for the connection a websocket client opened to a kernel, as JupyterLab's page
@@ -10,7 +13,9 @@ default, the cause of 15-40 ms of waiting per picture that ``interp.server`` des
 from __future__ import annotations
 
 import asyncio
+import html
 import json
+import re
 import sys
 import uuid
 
@@ -56,3 +61,42 @@ def test_kernel_messages_leave_the_server_without_delay(tmp_path, enabled):
         (config / "jupyter_server_config.json").write_text(json.dumps(off))
     with server("lab", workdir) as base:
         assert asyncio.run(_kernel_socket_nodelay(base)) == (1 if enabled else 0)
+
+
+#: JupyterLab's plugin that swaps the tab's icon while the kernel is busy.
+FAVICON_BUSY = "@jupyterlab/application-extension:faviconbusy"
+
+
+def _page_config(base: str) -> dict:
+    """The settings JupyterLab's page is given (its ``jupyter-config-data``)."""
+
+    async def fetch() -> str:
+        return (await AsyncHTTPClient().fetch(base + "/lab")).body.decode()
+
+    data = re.search(
+        r'<script id="jupyter-config-data" type="application/json">(.*?)</script>',
+        asyncio.run(fetch()),
+        re.S,
+    )
+    assert data, "no jupyter-config-data in JupyterLab's page"
+    return json.loads(html.unescape(data.group(1)))
+
+
+@pytest.mark.parametrize("enabled", [False, True], ids=["installed", "turned-on-again"])
+def test_the_busy_tab_icon_is_off_unless_turned_on_again(tmp_path, enabled):
+    """The package turns JupyterLab's busy tab icon off: every slider step swapped it twice,
+    each swap a request to the server (``tests/test_browser.py`` counts them on a real page).
+    ``jupyter labextension enable`` turns it back on: it writes a ``page_config.json``
+    enabling the plugin, which outranks the package's file. Here that file is written to a
+    folder on ``JUPYTER_CONFIG_PATH`` (ranked first) rather than into the test's environment."""
+    workdir = tmp_path / "w"
+    env = {}
+    if enabled:
+        labconfig = tmp_path / "on" / "labconfig"
+        labconfig.mkdir(parents=True)
+        on = {"disabledExtensions": {FAVICON_BUSY: False}}
+        (labconfig / "page_config.json").write_text(json.dumps(on))
+        env["JUPYTER_CONFIG_PATH"] = str(tmp_path / "on")
+    with server("lab", workdir, env=env) as base:
+        disabled = _page_config(base)["disabledExtensions"]
+    assert (FAVICON_BUSY in disabled) is not enabled
