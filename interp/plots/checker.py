@@ -11,7 +11,7 @@ from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 
 from interp.camera import Camera
-from interp.plots._base import Plot
+from interp.plots._base import Plot, place_pixels
 from interp.plots._style import bare, nice_ceiling
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, CheckerViews, checker_views, ground_plane
 
@@ -104,7 +104,6 @@ class CheckerPanels(Plot):
             mode=str(p["mode"]),
             span=int(p["span"]),
         )
-        extent = (-0.5, int(p["width"]) - 0.5, int(p["height"]) - 0.5, -0.5)
         error = np.ma.masked_array(self.views.error, mask=~self.views.covered)
         for image, data in (
             (self.approximate, self.views.approximate),
@@ -112,7 +111,7 @@ class CheckerPanels(Plot):
             (self.error, error),
         ):
             image.set_data(data)
-            image.set_extent(extent)
+            place_pixels(image, int(p["width"]), int(p["height"]))
         mode = str(p["mode"])
         self.axes[0].set_title(mode if mode != "subdivided" else f"exact every {p['span']} px")
         worst = float(self.views.error.max())
@@ -196,10 +195,8 @@ class UVImages(Plot):
         for k, (image, ax) in enumerate(zip(self.images, self.axes, strict=True)):
             shown = np.ma.masked_array(uv[..., k], mask=~views.covered)
             image.set_data(shown)
-            image.set_extent((-0.5, width - 0.5, height - 0.5, -0.5))
+            place_pixels(image, width, height)
             self.contours[k].set_segments(contour_segments(shown, CONTOURS))
-            ax.set_xlim(-0.5, width - 0.5)
-            ax.set_ylim(height - 0.5, -0.5)
             ax.set_title(f"{'uv'[k]} ({mode}), contours every 0.1")
 
     def largest_difference(self) -> tuple[float, float]:

@@ -13,7 +13,7 @@ from matplotlib.patches import Patch
 
 from interp import mipmap
 from interp.camera import Camera
-from interp.plots._base import Plot
+from interp.plots._base import Plot, place_pixels
 from interp.plots._style import AFFINE, CORRECT, bare
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
 
@@ -205,7 +205,6 @@ class FilteringPanels(Plot):
             scene, width, height, int(p["frequency"]), mode=str(p["mode"])
         )
         frags = views.fragments
-        extent = (-0.5, width - 0.5, height - 0.5, -0.5)
         if self._texture_key != (views.frequency, p["scale"]):
             self.texture.set_data(mipmap.checker_texture(views.frequency, views.size))
             checks, footprints = self.legend.get_texts()
@@ -216,7 +215,7 @@ class FilteringPanels(Plot):
         filtered = getattr(views, str(p["filter"]))
         self.image.set_data(np.ma.masked_array(filtered, mask=~frags.covered))
         for image in (self.lod, self.image):
-            image.set_extent(extent)
+            place_pixels(image, width, height)
 
         wanted = sample_pixels(width, height, *self.grid)
         drawn = np.isin(frags.pixel, wanted)  # the grid's pixels the plane covers

@@ -9,7 +9,7 @@ from matplotlib.collections import LineCollection
 
 from interp import approximation, shaders
 from interp.camera import Camera
-from interp.plots._base import Plot
+from interp.plots._base import Plot, place_pixels
 from interp.plots._style import AFFINE, CORRECT, bare
 from interp.raster import fragments, interpolate, viewport
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
@@ -164,7 +164,7 @@ class ClippingView(Plot):
                 background=0.75,
             )
         )
-        self.image.set_extent((-0.5, width - 0.5, height - 0.5, -0.5))
+        place_pixels(self.image, width, height)
         window = viewport(frags.clipped.clip, width, height)[..., :2]
         window[..., 1] = height - window[..., 1]  # image rows go down
         self.outlines.set_segments([np.vstack([tri, tri[:1]]) - 0.5 for tri in window])
