@@ -40,18 +40,14 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-# An editable install leaves out the package's data files: the two Jupyter settings the package
-# ships are copied by hand, unless they are there. One enables the server extension interp.server
-# (kernel messages sent to the page without delay; `jupyter server extension disable interp.server`
-# turns it off). The other turns off JupyterLab's busy tab icon, which the page swaps and fetches
-# from the server twice per slider step (`jupyter labextension enable
-# @jupyterlab/application-extension:faviconbusy` turns it back on).
-SERVER_CONFIG := $(VENV)/etc/jupyter/jupyter_server_config.d/interp.server.json
-LAB_CONFIG := $(VENV)/etc/jupyter/labconfig/page_config.d/interp.json
-JUPYTER_SETTINGS := test -e $(SERVER_CONFIG) || install -D -m 644 \
-	jupyter-config/jupyter_server_config.d/interp.server.json $(SERVER_CONFIG); \
-	test -e $(LAB_CONFIG) || install -D -m 644 \
-	jupyter-config/labconfig/page_config.d/interp.json $(LAB_CONFIG)
+# An editable install leaves out the package's data files: the Jupyter settings the package ships
+# (jupyter-config/, see pyproject.toml) are copied by hand, each unless it is there. They enable
+# the server extension interp.server (kernel messages sent to the page without delay), turn off
+# JupyterLab's busy tab icon and move its execution indicator from the notebook's toolbar to the
+# status bar (both changed on every slider step, and cost the page's main thread each time).
+JUPYTER_FILES := $(patsubst jupyter-config/%,%,$(wildcard jupyter-config/*/*.json jupyter-config/*/*/*.json))
+JUPYTER_SETTINGS := for f in $(JUPYTER_FILES); do test -e $(VENV)/etc/jupyter/$$f \
+	|| install -D -m 644 jupyter-config/$$f $(VENV)/etc/jupyter/$$f || exit 1; done
 
 $(RUNTIME): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e .

@@ -148,6 +148,16 @@ def save_screenshot(page, name: str, canvas=None) -> None:
         app.first.screenshot(path=path)
 
 
+#: Records what changes in the visible notebook's toolbar from now on.
+TOOLBAR_WATCH = f"""() => {{
+    window.toolbarChanges = [];
+    new MutationObserver(records => window.toolbarChanges.push(
+        ...records.map(r => r.type + ' ' + (r.attributeName || '') + ' ' + r.target.nodeName)))
+      .observe(document.querySelector('{VISIBLE} .jp-NotebookPanel-toolbar'),
+               {{subtree: true, childList: true, attributes: true, characterData: true}});
+}}"""
+
+
 def test_checkerboard_lesson_moves_with_its_camera_slider(lab, page):
     canvas = open_and_run(page, lab, "06_checkerboards.ipynb")
     before = wait_until_drawn(canvas)
@@ -155,10 +165,13 @@ def test_checkerboard_lesson_moves_with_its_camera_slider(lab, page):
     pitch = slider(page, "pitch (deg)")
     pitch.scroll_into_view_if_needed()
     value_before = pitch.locator(".widget-readout").inner_text()
-    # JupyterLab's busy tab icon is off (jupyter-config/labconfig): with it, each step of the
-    # drag swapped the icon to busy and back, and the page fetched it from the server.
+    # JupyterLab's busy tab icon is off and its execution indicator is in the status bar
+    # (jupyter-config/labconfig): with them, each step of the drag swapped the icon to busy and
+    # back, the page fetching it from the server, and the indicator in the notebook's toolbar
+    # made the toolbar reset every button's tabindex, twice.
     icons = []
     page.on("request", lambda r: "/favicons/" in r.url and icons.append(r.url))
+    page.evaluate(TOOLBAR_WATCH)
     drag_handle(page, pitch, 25)
     wait_until_changed(canvas, before)
     # The first change seen can be a few pixels (the page scrolled to the slider): measure the
@@ -168,6 +181,8 @@ def test_checkerboard_lesson_moves_with_its_camera_slider(lab, page):
     assert np.mean(np.any(after != before, axis=2)) > 0.05, "too little of the figure changed"
     assert icons == []
     assert page.locator('link[rel="icon"]').get_attribute("class") == "idle favicon"
+    assert page.evaluate("window.toolbarChanges") == []
+    assert page.locator("#jp-main-statusbar .jp-Notebook-ExecutionIndicator").count() == 1
     assert_no_errors(page)
 
 

@@ -100,3 +100,31 @@ def test_the_busy_tab_icon_is_off_unless_turned_on_again(tmp_path, enabled):
     with server("lab", workdir, env=env) as base:
         disabled = _page_config(base)["disabledExtensions"]
     assert (FAVICON_BUSY in disabled) is not enabled
+
+
+def _settings(base: str, plugin: str) -> dict:
+    """A plugin's settings as JupyterLab's page gets them: defaults, the package's overrides
+    and the user's own settings, composed."""
+
+    async def fetch() -> bytes:
+        return (await AsyncHTTPClient().fetch(f"{base}/lab/api/settings/{plugin}")).body
+
+    return json.loads(asyncio.run(fetch()))["composite"]
+
+
+@pytest.mark.parametrize("moved_back", [False, True], ids=["installed", "moved-back"])
+def test_the_execution_indicator_is_in_the_status_bar_unless_moved_back(tmp_path, moved_back):
+    """In the notebook's toolbar, each change of the execution indicator (two per slider step)
+    made the toolbar reset every button's tabindex (``tests/test_browser.py`` watches the
+    toolbar during a drag); the package shows it in the status bar, and the user's own
+    settings (the Settings Editor writes them) put it back."""
+    workdir = tmp_path / "w"
+    if moved_back:
+        mine = workdir / "settings" / "@jupyterlab" / "notebook-extension"
+        mine.mkdir(parents=True)
+        back = {"kernelStatus": {"showOnStatusBar": False, "showProgress": True}}
+        (mine / "tracker.jupyterlab-settings").write_text(json.dumps(back))
+    with server("lab", workdir) as base:
+        status = _settings(base, "@jupyterlab/notebook-extension:tracker")["kernelStatus"]
+    assert status["showOnStatusBar"] is not moved_back
+    assert status["showProgress"] is True
