@@ -103,13 +103,15 @@ def test_the_busy_tab_icon_is_off_unless_turned_on_again(tmp_path, enabled):
 
 
 def _settings(base: str, plugin: str) -> dict:
-    """A plugin's settings as JupyterLab's page gets them: defaults, the package's overrides
-    and the user's own settings, composed."""
+    """A plugin's settings as JupyterLab's page composes them: the user's own, else the
+    schema's defaults, which the server gives with the package's overrides applied."""
 
     async def fetch() -> bytes:
         return (await AsyncHTTPClient().fetch(f"{base}/lab/api/settings/{plugin}")).body
 
-    return json.loads(asyncio.run(fetch()))["composite"]
+    reply = json.loads(asyncio.run(fetch()))
+    defaults = {name: spec.get("default") for name, spec in reply["schema"]["properties"].items()}
+    return {**defaults, **reply["settings"]}
 
 
 @pytest.mark.parametrize("moved_back", [False, True], ids=["installed", "moved-back"])
