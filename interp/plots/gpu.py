@@ -168,8 +168,6 @@ class ClippingView(Plot):
         window = viewport(frags.clipped.clip, width, height)[..., :2]
         window[..., 1] = height - window[..., 1]  # image rows go down
         self.outlines.set_segments([np.vstack([tri, tri[:1]]) - 0.5 for tri in window])
-        self.ax.set_xlim(-0.5, width - 0.5)
-        self.ax.set_ylim(height - 0.5, -0.5)
         visible = len(np.unique(frags.clipped.source))
         self.counts = {"pieces": len(frags.clipped), "visible triangles": visible}
         self.ax.set_title(f"{visible} triangles in view became {len(frags.clipped)} after clipping")

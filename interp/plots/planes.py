@@ -18,7 +18,7 @@ from matplotlib.collections import LineCollection
 
 from interp import theory
 from interp.camera import Camera
-from interp.plots._base import Plot
+from interp.plots._base import Plot, place_pixels
 from interp.plots._style import bare
 from interp.plots.checker import contour_segments
 from interp.scenes import LESSON_CAMERA
@@ -109,11 +109,9 @@ class PlanePanels(Plot):
             image = self.images[k]
             image.set_data(shown)
             image.set_clim(low, high)
-            image.set_extent((-0.5, width - 0.5, height - 0.5, -0.5))
+            place_pixels(image, width, height)
             levels = np.linspace(low, high, 12)[1:-1]
             self.contours[k].set_segments(contour_segments(shown, levels))
-            self.axes[k].set_xlim(-0.5, width - 0.5)
-            self.axes[k].set_ylim(height - 0.5, -0.5)
             fits = theory.misfits(self.truth, name)
             self.fits.append(fits)
             self.axes[k].set_title(f"{name} {verdict(fits)}")
