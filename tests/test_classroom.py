@@ -149,3 +149,19 @@ def test_make_present_serves_the_lessons_with_voila_in_presentation_mode():
     from interp.classroom import voila_arguments
 
     assert any("ClassroomKernelManager" in a for a in voila_arguments(300, 60, 30))
+
+
+def test_pip_installs_every_jupyter_setting_make_copies():
+    """``make`` copies every file of ``jupyter-config/`` into the environment by hand (its
+    install is editable); ``pip install`` (Binder, a hub) installs the data files
+    pyproject.toml lists. Both must give the same files, each at ``etc/jupyter/`` plus its
+    path in ``jupyter-config/``."""
+    installed = {
+        f"{target}/{Path(file).name}": file
+        for target, files in PYPROJECT["tool"]["setuptools"]["data-files"].items()
+        for file in files
+    }
+    shipped = [str(path.relative_to(ROOT)) for path in (ROOT / "jupyter-config").rglob("*.json")]
+    assert sorted(installed.values()) == sorted(shipped)
+    for place, file in installed.items():
+        assert place == "etc/jupyter/" + file.removeprefix("jupyter-config/")
