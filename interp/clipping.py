@@ -211,7 +211,10 @@ class _Soup:
 
 
 def _in_draw_order(a: _Soup, b: _Soup) -> _Soup:
-    """The triangles of both, in the order of the input triangles they came from."""
+    """The triangles of both, in the order of the input triangles they came from (each of
+    ``a`` and ``b`` is in that order already)."""
+    if len(b.source) == 0 or len(a.source) == 0:
+        return b if len(a.source) == 0 else a
     source = np.concatenate([a.source, b.source])
     order = np.argsort(source, kind="stable")  # a triangle's pieces stay in their order
     return _Soup(np.concatenate([a.vertices, b.vertices])[order], source[order])
@@ -237,28 +240,28 @@ def _clip_against(soup: _Soup, plane: np.ndarray) -> _Soup:
     if np.all(n_inside == 3):
         return soup
 
-    whole = soup.take(n_inside == 3)
+    # Each kind of triangle is cut only where there is one: on a handful of triangles (a ground
+    # plane of two) the numpy calls, not the arithmetic, are the cost.
+    whole = n_inside == 3
+    pieces, parents = [soup.take(whole)], [np.flatnonzero(whole)]
     # One vertex inside: roll it to position 0; the piece is (v0, cut(v0, v1), cut(v0, v2)).
     one = n_inside == 1
-    v0, v1, v2 = _rolled(soup.take(one), np.argmax(inside[one], axis=1), distance[one])
-    cut01, cut02 = _cut(v0, v1), _cut(v0, v2)
+    if one.any():
+        v0, v1, v2 = _rolled(soup.take(one), np.argmax(inside[one], axis=1), distance[one])
+        pieces.append(_assemble(v0, _cut(v0, v1), _cut(v0, v2)))
+        parents.append(np.flatnonzero(one))
     # Two inside: roll the outside one to position 0; the quad (v1, v2, cut(v2, v0), cut(v1, v0))
     # becomes two triangles. Rolling keeps each triangle's winding.
     two = n_inside == 2
-    u0, u1, u2 = _rolled(soup.take(two), np.argmin(inside[two], axis=1), distance[two])
-    cut20, cut10 = _cut(u2, u0), _cut(u1, u0)
-
-    pieces = [
-        (whole, None),
-        (_assemble(v0, cut01, cut02), np.flatnonzero(one)),
-        (_assemble(u1, u2, cut20), np.flatnonzero(two)),
-        (_assemble(u1, cut20, cut10), np.flatnonzero(two)),
-    ]
-    parent = np.concatenate([np.flatnonzero(n_inside == 3)] + [index for _, index in pieces[1:]])
-    order = np.argsort(parent, kind="stable")  # back into draw order
+    if two.any():
+        u0, u1, u2 = _rolled(soup.take(two), np.argmin(inside[two], axis=1), distance[two])
+        cut20, cut10 = _cut(u2, u0), _cut(u1, u0)
+        pieces += [_assemble(u1, u2, cut20), _assemble(u1, cut20, cut10)]
+        parents += [np.flatnonzero(two)] * 2
+    order = np.argsort(np.concatenate(parents), kind="stable")  # back into draw order
     return _Soup(
-        np.concatenate([p.vertices for p, _ in pieces])[order],
-        np.concatenate([p.source for p, _ in pieces])[order],
+        np.concatenate([p.vertices for p in pieces])[order],
+        np.concatenate([p.source for p in pieces])[order],
     )
 
 

@@ -571,13 +571,14 @@ def _scan(pieces: ClippedTriangles, width: int, height: int, depth_bits: int) ->
     pieces, X, Y, window = (_take(a, area2 != 0) for a in (pieces, X, Y, window))
     area2 = area2[area2 != 0]
     clockwise = area2 < 0
-    swap = np.where(clockwise[:, None], [0, 2, 1], [0, 1, 2])
-    pieces = _reorder(pieces, swap)
-    X, Y, window = (
-        np.take_along_axis(a, swap if a.ndim == 2 else swap[..., None], axis=1)
-        for a in (X, Y, window)
-    )
-    area2 = np.abs(area2)
+    if clockwise.any():  # (a mesh's triangles often all wind one way: then nothing to swap)
+        swap = np.where(clockwise[:, None], [0, 2, 1], [0, 1, 2])
+        pieces = _reorder(pieces, swap)
+        X, Y, window = (
+            np.take_along_axis(a, swap if a.ndim == 2 else swap[..., None], axis=1)
+            for a in (X, Y, window)
+        )
+        area2 = np.abs(area2)
 
     edges = _Edges.of(X, Y)
     rows = _rows(Y, edges, width, height)
