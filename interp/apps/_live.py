@@ -369,7 +369,9 @@ class Blitter:
             self.figure.draw_artist(title)
             return
         renderer = self.figure.canvas.get_renderer()
-        extent = title.get_window_extent(renderer)
+        extent = self._reach_now.get(id(title))  # measured this frame for another title's box
+        if extent is None:
+            extent = self._reach_now[id(title)] = title.get_window_extent(renderer)
         look = (
             title.get_text(),
             tuple(extent.bounds),
