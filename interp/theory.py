@@ -171,10 +171,11 @@ def plane_fit(values: np.ndarray, where: np.ndarray) -> PlaneFit:
         return PlaneFit(np.zeros(3), 0.0, len(rows))
     z = values[where]
     design = np.column_stack([cols, rows, np.ones(len(rows))]).astype(float)
-    if np.linalg.matrix_rank(design) < 3:
-        return PlaneFit(np.zeros(3), 0.0, len(rows), on_a_line=True)
     scale = max(float(np.abs(z).max()), 1e-300)
-    coefficients, *_ = np.linalg.lstsq(design, z / scale, rcond=None)
+    # lstsq's rank is matrix_rank's: singular values above eps * max(N, 3) times the largest.
+    coefficients, _, rank, _ = np.linalg.lstsq(design, z / scale, rcond=None)
+    if rank < 3:
+        return PlaneFit(np.zeros(3), 0.0, len(rows), on_a_line=True)
     coefficients = coefficients * scale
     spread = float(z.max() - z.min())
     residual = float(np.abs(design @ coefficients - z).max())
