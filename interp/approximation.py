@@ -12,6 +12,7 @@ Error is the mean distance, in texels, between the approximate and the exact ``(
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -51,6 +52,16 @@ def _distinct(ids: np.ndarray, size: int) -> np.ndarray:
     return np.flatnonzero(np.bincount(ids, minlength=size))
 
 
+@functools.lru_cache(maxsize=4)
+def _drawn(camera: Camera, width: int, height: int, quads: int) -> tuple:
+    """The ground plane cut into ``quads`` x ``quads`` quads, its fragments and their exact
+    ``(u, v)``: ``(scene, fragments, exact)``. Kept for the last few, as :func:`span_costs`
+    and :func:`tessellation_costs` both draw the plane of one quad for a camera."""
+    scene = ground_plane(camera, LESSON_SIZE, quads)
+    frags = fragments(scene.clip, scene.uv, scene.triangles, width, height)
+    return scene, frags, fragment_values(frags, "perspective")
+
+
 def _mean_texel_error(approximate: np.ndarray, exact: np.ndarray, frequency: float) -> float:
     return float(np.mean(_texel_error(approximate, exact, frequency))) if exact.size else 0.0
 
@@ -77,9 +88,7 @@ def span_costs(
     True
     """
     camera = camera.fitted(width, height)
-    scene = ground_plane(camera, LESSON_SIZE, _checks.positive_int(quads, "quads", 256))
-    frags = fragments(scene.clip, scene.uv, scene.triangles, width, height)
-    exact = fragment_values(frags, "perspective")
+    _, frags, exact = _drawn(camera, width, height, _checks.positive_int(quads, "quads", 256))
     pixels = max(len(frags.pixel), 1)
     rows = frags.row_spans[_distinct(frags.row_item, len(frags.row_spans))]
     lengths = rows[:, 1] - rows[:, 0] + 1
@@ -112,9 +121,7 @@ def tessellation_costs(
     camera = camera.fitted(width, height)
     divides, errors = [], []
     for n in quads:
-        scene = ground_plane(camera, LESSON_SIZE, _checks.positive_int(n, "quads", 256))
-        frags = fragments(scene.clip, scene.uv, scene.triangles, width, height)
-        exact = fragment_values(frags, "perspective")
+        scene, frags, exact = _drawn(camera, width, height, _checks.positive_int(n, "quads", 256))
         affine = fragment_values(frags, "affine")
         errors.append(_mean_texel_error(affine, exact, frequency))
         drawn = _distinct(frags.triangle, len(scene.triangles))
