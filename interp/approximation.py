@@ -19,8 +19,8 @@ import numpy as np
 
 from interp import _checks
 from interp.camera import Camera
-from interp.raster import fragment_values, fragment_values_per_span, fragments
-from interp.scenes import LESSON_SIZE, ground_plane
+from interp.raster import Fragments, fragment_values, fragment_values_per_span, fragments
+from interp.scenes import LESSON_SIZE, Scene, ground_plane
 from interp.texture import _texel_error
 
 #: The settings the lesson compares.
@@ -53,10 +53,20 @@ def _distinct(ids: np.ndarray, size: int) -> np.ndarray:
 
 
 @functools.lru_cache(maxsize=4)
-def _drawn(camera: Camera, width: int, height: int, quads: int) -> tuple:
+def _drawn(
+    camera: Camera, width: int, height: int, quads: int
+) -> tuple[Scene, Fragments, np.ndarray]:
     """The ground plane cut into ``quads`` x ``quads`` quads, its fragments and their exact
     ``(u, v)``: ``(scene, fragments, exact)``. Kept for the last few, as :func:`span_costs`
-    and :func:`tessellation_costs` both draw the plane of one quad for a camera."""
+    and :func:`tessellation_costs` both draw the plane of one quad for a camera (shared:
+    not to be changed).
+
+    Examples
+    --------
+    >>> camera = Camera(height=1, pitch=25).fitted(8, 6)
+    >>> _drawn(camera, 8, 6, 1) is _drawn(camera, 8, 6, 1)
+    True
+    """
     scene = ground_plane(camera, LESSON_SIZE, quads)
     frags = fragments(scene.clip, scene.uv, scene.triangles, width, height)
     return scene, frags, fragment_values(frags, "perspective")

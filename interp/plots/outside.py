@@ -10,7 +10,7 @@ clipping made new vertices. The viewer can orbit it with the mouse (ipympl) or p
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.artist import Artist
+from matplotlib.artist import Artist, allow_rasterization
 from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
@@ -405,6 +405,7 @@ class _HatchedOnce(Poly3DCollection):
     Agg makes the hatch's pattern anew for each path it hatches (0.4 ms a polygon); the pieces
     that clipping cuts off are several polygons on every step. Hatched as one path with a loop
     per polygon, the lines are the same: the pattern is anchored to the canvas, not the path.
+    One hatch colour for all, the first polygon's (the view gives them one).
 
     Examples
     --------
@@ -416,6 +417,7 @@ class _HatchedOnce(Poly3DCollection):
     '//'
     """
 
+    @allow_rasterization
     def draw(self, renderer: object) -> None:
         hatch = self._hatch
         if not hatch or not self.get_visible() or not self.get_paths():
