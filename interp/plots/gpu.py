@@ -211,7 +211,9 @@ class ApproximationLab(Plot):
         (self.tessellation,) = ax.plot(
             [], [], **{**AFFINE, "label": "tessellation: n x n quads, affine"}
         )
-        # One label per setting, made once and moved (or hidden) by redraw.
+        # One label per setting, made once and moved (or hidden) by redraw. Each labels a point
+        # the axes' limits are fitted around (redraw), so none needs matplotlib's check, on
+        # every draw, that its point is inside the axes (annotation_clip).
         self.notes = {
             (line, setting): ax.annotate(
                 template.format(setting),
@@ -221,6 +223,7 @@ class ApproximationLab(Plot):
                 fontsize="x-small",
                 color=line.get_color(),
                 visible=False,
+                annotation_clip=False,
             )
             for line, settings, template in (
                 (self.spans, approximation.SPANS, "N={:d}"),
@@ -247,8 +250,8 @@ class ApproximationLab(Plot):
             note.set_visible(False)
         for line, costs in ((self.spans, spans), (self.tessellation, tess)):
             # Exact settings (N = 1, and every N along rows of constant depth) have no place
-            # on a log axis: their errors are rounding.
-            shown = costs.mean_error >= approximation.EXACT
+            # on a log axis: their errors are rounding. Nor has a plane out of view (no divides).
+            shown = (costs.mean_error >= approximation.EXACT) & (costs.divides_per_pixel > 0)
             x, y, settings = (
                 a[shown] for a in (costs.divides_per_pixel, costs.mean_error, costs.setting)
             )
