@@ -14,7 +14,7 @@ eye    : where the camera is; target: a point it looks at; up: which way is up.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -166,6 +166,8 @@ class Camera:
     array([0., 2., 0.])
     >>> cam.view @ [0, 0, 0, 1]      # looking straight down: the origin is 2 units ahead
     array([ 0.,  0., -2.,  1.])
+    >>> Camera(height=np.array(2), pitch=90).height   # any real number, kept as a float
+    2.0
     """
 
     height: float = 1.0
@@ -187,6 +189,8 @@ class Camera:
         _fovy(self.fovy, "fovy")
         _checks.scale(self.aspect, "aspect")
         _planes(self.near, self.far)
+        for name in (f.name for f in fields(self)):  # held as Python floats: hashable, exact
+            object.__setattr__(self, name, float(getattr(self, name)))
 
     @property
     def eye(self) -> np.ndarray:
