@@ -3,6 +3,8 @@ against a full redraw (blitting), the mouse and the fixed viewpoints."""
 
 from __future__ import annotations
 
+import io
+
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
@@ -330,3 +332,30 @@ def test_the_cut_off_pieces_are_hatched_once_with_the_lines_each_piece_would_get
     assert (pictures[1] != pictures[2]).any(axis=-1).sum() > 300  # the hatch's lines
     view = OutsideView(Figure().add_subplot(projection="3d"))
     assert isinstance(view.cut_off, _HatchedOnce) and view.cut_off.get_hatch() == "////"
+
+
+@pytest.mark.parametrize("kind", ["svg", "pdf"])
+def test_vector_handouts_hatch_the_cut_off_pieces_as_any_collection(kind):
+    """PDF and SVG lay a hatch over each face's own colour, at its alpha: there the pieces are
+    drawn as a plain collection draws them, byte for byte (but the group's name in SVG)."""
+    pieces = [
+        [(-1.0, 0.0, -1.0), (-0.2, 0.0, -1.0), (-0.6, 0.0, 0.5)],
+        [(0.2, 0.0, -0.5), (1.0, 0.0, -0.5), (1.0, 0.0, 1.0), (0.3, 0.0, 0.8)],
+    ]
+    files = []
+    for collection in (Poly3DCollection, _HatchedOnce):
+        figure = Figure(figsize=(3, 3))
+        ax = figure.add_subplot(projection="3d")
+        ax.add_collection3d(
+            collection(pieces, facecolor=(0.8, 0.4, 0.0, 0.25), edgecolor="#D55E00", hatch="//"),
+            autolim=False,
+        )
+        out = io.BytesIO()
+        with plt.rc_context({"svg.hashsalt": "interp"}):
+            figure.savefig(
+                out,
+                format=kind,
+                metadata={"svg": {"Date": None}, "pdf": {"CreationDate": None}}[kind],
+            )
+        files.append(out.getvalue().replace(b"_HatchedOnce_1", b"Poly3DCollection_1"))
+    assert files[0] == files[1]

@@ -10,8 +10,9 @@ clipping made new vertices. The viewer can orbit it with the mouse (ipympl) or p
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.artist import Artist, allow_rasterization
+from matplotlib.artist import Artist
 from matplotlib.axes import Axes
+from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.path import Path
@@ -400,12 +401,14 @@ class OutsideView(Plot):
 
 
 class _HatchedOnce(Poly3DCollection):
-    """Polygons in 3D whose hatch is drawn once over all of them, after their faces and edges.
+    """Polygons in 3D whose hatch Agg draws once over all of them, after their faces and edges.
 
     Agg makes the hatch's pattern anew for each path it hatches (0.4 ms a polygon); the pieces
     that clipping cuts off are several polygons on every step. Hatched as one path with a loop
-    per polygon, the lines are the same: the pattern is anchored to the canvas, not the path.
-    One hatch colour for all, the first polygon's (the view gives them one).
+    per polygon, the lines are the same: Agg anchors the pattern to the canvas, not the path.
+    One hatch colour for all (the view gives them one). Drawn as any collection where this
+    would change the picture: one polygon, a vector backend (PDF and SVG lay the hatch over
+    each face's own colour, at its alpha), or a filter, path effect or sketch.
 
     Examples
     --------
@@ -417,10 +420,17 @@ class _HatchedOnce(Poly3DCollection):
     '//'
     """
 
-    @allow_rasterization
     def draw(self, renderer: object) -> None:
         hatch = self._hatch
-        if not hatch or not self.get_visible() or not self.get_paths():
+        if (
+            not hatch
+            or not self.get_visible()
+            or len(self.get_paths()) < 2
+            or not isinstance(renderer, RendererAgg)
+            or self.get_agg_filter() is not None
+            or self.get_path_effects()
+            or self.get_sketch_params() is not None
+        ):
             super().draw(renderer)
             return
         self._hatch = None  # faces and edges, polygon by polygon, without the hatch
