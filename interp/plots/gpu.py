@@ -211,9 +211,11 @@ class ApproximationLab(Plot):
         (self.tessellation,) = ax.plot(
             [], [], **{**AFFINE, "label": "tessellation: n x n quads, affine"}
         )
-        # One label per setting, made once and moved (or hidden) by redraw. Each labels a point
-        # the axes' limits are fitted around (redraw), so none needs matplotlib's check, on
-        # every draw, that its point is inside the axes (annotation_clip).
+        # One label per setting, made once and moved (or hidden) by redraw. A label shows only
+        # while its point is inside the axes' limits: checked when the points or the limits
+        # change (the toolbar's zoom and pan change them too), not on every draw as matplotlib's
+        # annotation_clip does (1-2 ms a frame for the twelve).
+        self.labelled: set[tuple] = set()
         self.notes = {
             (line, setting): ax.annotate(
                 template.format(setting),
@@ -231,6 +233,8 @@ class ApproximationLab(Plot):
             )
             for setting in settings
         }
+        for limits in ("xlim_changed", "ylim_changed"):
+            ax.callbacks.connect(limits, lambda _: self._label_points_in_view())
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("divides per pixel drawn")
@@ -246,8 +250,7 @@ class ApproximationLab(Plot):
         size = (int(p["width"]), int(p["height"]), float(p["frequency"]))
         spans, tess = _measured(p["camera"], *size)
         self.costs = {"spans": spans, "tessellation": tess}
-        for note in self.notes.values():
-            note.set_visible(False)
+        self.labelled = set()
         for line, costs in ((self.spans, spans), (self.tessellation, tess)):
             # Exact settings (N = 1, and every N along rows of constant depth) have no place
             # on a log axis: their errors are rounding. Nor has a plane out of view (no divides).
@@ -257,9 +260,8 @@ class ApproximationLab(Plot):
             )
             line.set_data(x, y)
             for xi, yi, setting in zip(x, y, settings, strict=True):
-                note = self.notes[line, int(setting)]
-                note.xy = (xi, yi)
-                note.set_visible(True)
+                self.notes[line, int(setting)].xy = (xi, yi)
+                self.labelled.add((line, int(setting)))
         xs = np.concatenate([spans.divides_per_pixel, tess.divides_per_pixel])
         ys = np.concatenate([spans.mean_error, tess.mean_error])
         keep = (xs > 0) & (ys >= approximation.EXACT)
@@ -276,6 +278,14 @@ class ApproximationLab(Plot):
             self.ax.set_xlim(*self.EMPTY_X)
             self.ax.set_ylim(*self.EMPTY_Y)
             self.ax.set_title("no error to plot: the plane is out of view or exact")
+        self._label_points_in_view()
+
+    def _label_points_in_view(self) -> None:
+        """Show the label of each point plotted that is inside the axes' limits, hide the rest."""
+        (x0, x1), (y0, y1) = (sorted(limits) for limits in (self.ax.get_xlim(), self.ax.get_ylim()))
+        for key, note in self.notes.items():
+            x, y = note.xy
+            note.set_visible(key in self.labelled and x0 <= x <= x1 and y0 <= y <= y1)
 
     @property
     def dynamic(self) -> list:
@@ -288,7 +298,7 @@ def _measured(
 ) -> tuple[approximation.Costs, approximation.Costs]:
     """The lab's two measurements, spans and tessellation, kept for the last 512 settings.
 
-    Each takes seven rasterizations, about 40 ms, and depends on nothing else; a student
+    Both take six rasterizations, about 35 ms, and depend on nothing else; a student
     dragging a slider back and forth comes over the same settings again, which are then
     drawn without measuring. The arrays are read-only, as they are shared.
 
