@@ -274,13 +274,14 @@ def chromium(playwright):
 # worker hashes the snapshots, off the page's main thread: hashed there, they took 2.8 ms of it
 # a picture at 820 x 474 and 8.2 ms at 1640 x 948 (a device pixel ratio of 2), in the frame
 # about to be painted, which a student's page does not spend (the snapshot takes 0.1 ms).
-# Where a page cannot start the worker, the probe hashes on the main thread as before. So a
-# frame is recorded a few ms after its time, in order. So a "frame" is a distinct picture as it is about to be painted, at most one per
-# display frame; identical redraws are not counted. Input events (key and pointer) are
-# recorded with their ``timeStamp``, on the same clock, and so is every ``toDataURL`` call,
-# with the URL it made and whether ipympl's frame handler made it (``probe.dataUrls``, the
-# last 40); and so is each frame decoded, with how (``probe.decodes``: an ``<img>`` given a
-# blob URL, ``ImageDecoder`` or ``createImageBitmap``).
+# Where a page cannot start the worker, the probe hashes on the main thread as before. A frame
+# is recorded a few ms after its time, in order. So a "frame" is a distinct picture as it is
+# about to be painted, at most one per display frame; identical redraws are not counted. Input
+# events (key and pointer) are recorded with their ``timeStamp``, on the same clock, and so is
+# every ``toDataURL`` call, with the URL it made and whether ipympl's frame handler made it
+# (``probe.dataUrls``, the last 40); and so is each frame decoded, with how
+# (``probe.decodes``: an ``<img>`` given a blob URL, ``ImageDecoder`` or
+# ``createImageBitmap``).
 
 FRAME_PROBE = r"""
 (() => {
