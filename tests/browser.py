@@ -344,6 +344,9 @@ FRAME_PROBE = r"""
   }
   const byId = new Map();
   let serial = 0;
+  // The page's own createImageBitmap, before the probe wraps it to count decodes (below): its
+  // snapshots are not the frames' decodes.
+  const snapshot = window.createImageBitmap.bind(window);
   if (hasher) {
     hasher.onmessage = ({data: {id, h}}) => {
       const entry = byId.get(id);
@@ -365,7 +368,7 @@ FRAME_PROBE = r"""
       }
       const id = ++serial;
       byId.set(id, entry);
-      createImageBitmap(c).then(
+      snapshot(c).then(
         (picture) => hasher.postMessage({id, picture}, [picture]),
         () => {
           byId.delete(id);
