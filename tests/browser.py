@@ -306,13 +306,14 @@ FRAME_PROBE = r"""
     }
     return result;
   };
-  probe.hash = (c) => {
-    if (!c.width || !c.height) return 0;
-    const d = new Uint32Array(c.getContext('2d').getImageData(0, 0, c.width, c.height).data.buffer);
-    let h = 2166136261 ^ c.width ^ (c.height << 16);
+  // FNV-1a over a 2D context's pixels: on the main thread (probe.hash), and in the worker below.
+  const pixelHash = (context, width, height) => {
+    const d = new Uint32Array(context.getImageData(0, 0, width, height).data.buffer);
+    let h = 2166136261 ^ width ^ (height << 16);
     for (let i = 0; i < d.length; i++) h = Math.imul(h ^ d[i], 16777619);
     return h >>> 0;
   };
+  probe.hash = (c) => (c.width && c.height ? pixelHash(c.getContext('2d'), c.width, c.height) : 0);
   // Snapshots waiting for their hash, per canvas in the order taken: each recorded (if its
   // picture is new) once it and every earlier one of its canvas are hashed.
   const waiting = new Map();
@@ -328,16 +329,13 @@ FRAME_PROBE = r"""
   let hasher = null;
   try {
     hasher = new Worker(URL.createObjectURL(new Blob([`
+      const pixelHash = ${pixelHash};
       onmessage = ({data: {id, picture}}) => {
         const canvas = new OffscreenCanvas(picture.width, picture.height);
         const context = canvas.getContext('2d');
         context.drawImage(picture, 0, 0);
         picture.close();
-        const d = new Uint32Array(
-          context.getImageData(0, 0, canvas.width, canvas.height).data.buffer);
-        let h = 2166136261 ^ canvas.width ^ (canvas.height << 16);
-        for (let i = 0; i < d.length; i++) h = Math.imul(h ^ d[i], 16777619);
-        postMessage({id, h: h >>> 0});
+        postMessage({id, h: pixelHash(context, canvas.width, canvas.height)});
       };`], {type: 'text/javascript'})));
   } catch (error) {
     hasher = null;  // e.g. a page whose content security policy forbids it
