@@ -201,36 +201,32 @@ def test_approximation_lab_plots_the_costs():
 
 def test_the_lab_labels_the_points_inside_its_axes_as_the_toolbar_zooms_and_pans():
     """A label shows while its point is inside the axes (what matplotlib's annotation_clip
-    checks on every draw): after a redraw every plotted point is labelled; zoomed in, only the
-    points left inside; back out, all again. Each label is placed at its point."""
+    checks on every draw): after a redraw every plotted point has a label there; zoomed in,
+    only the points left inside; back out, all again."""
     app = apps.approximations()
     lab = app.plot.lab
     ax = lab.ax
     points = {
-        (line, int(setting)): (x, y)
+        (float(x), float(y))
         for line in (lab.spans, lab.tessellation)
-        for x, y, setting in zip(*line.get_data(), _settings(lab, line), strict=True)
+        for x, y in zip(*line.get_data(), strict=True)
     }
+
+    def labelled() -> set[tuple[float, float]]:
+        return {tuple(map(float, note.xy)) for note in lab.notes.values() if note.get_visible()}
+
     assert len(points) >= 8
-    labelled = {key for key, note in lab.notes.items() if note.get_visible()}
-    assert labelled == set(points)
-    assert all(lab.notes[key].xy == xy for key, xy in points.items())
+    assert labelled() == points
     full = ax.get_xlim(), ax.get_ylim()
-    xs = sorted(x for x, _ in points.values())
-    ax.set_xlim(xs[2] / 1.01, xs[-3] * 1.01)  # as the toolbar's zoom: limits, no redraw
-    inside = {key for key, (x, _) in points.items() if xs[2] / 1.01 <= x <= xs[-3] * 1.01}
+    xs = sorted(x for x, _ in points)
+    low, high = xs[2] / 1.01, xs[-3] * 1.01
+    ax.set_xlim(low, high)  # as the toolbar's zoom: limits, no redraw
+    inside = {(x, y) for x, y in points if low <= x <= high}
     assert 0 < len(inside) < len(points)
-    assert {key for key, note in lab.notes.items() if note.get_visible()} == inside
+    assert labelled() == inside
     ax.set_xlim(*full[0])
     ax.set_ylim(*full[1])
-    assert {key for key, note in lab.notes.items() if note.get_visible()} == set(points)
-
-
-def _settings(lab, line) -> list[int]:
-    """The settings (N or n) of the points a lab's line plots, in order."""
-    costs = lab.costs["spans" if line is lab.spans else "tessellation"]
-    shown = (costs.mean_error >= approximation.EXACT) & (costs.divides_per_pixel > 0)
-    return [int(s) for s in costs.setting[shown]]
+    assert labelled() == points
 
 
 def test_presentation_mode_makes_bigger_apps():
