@@ -678,3 +678,45 @@ def test_kept_glyphs_measure_text_as_matplotlib_does(hinting):
             # Unhinted, set_text's sub-pixel pen differs from the layout's: matplotlib measures.
             assert bool(kept.boxes) == (hinting != "no_hinting")
     assert measured == 180
+
+
+def test_kept_font_heights_lay_text_out_as_matplotlib_does():
+    """A live renderer answers a line's least ascent and descent, which matplotlib reads from
+    the font's tables for every text it lays out, from what it read the first time: text laid
+    out with it has matplotlib's extent to the last bit, for three fonts, bold and italic,
+    five sizes, three resolutions, one and two lines; and a change of the rcParams that
+    resolve a family to a font is a new font (not the kept one)."""
+    from matplotlib.backends.backend_agg import RendererAgg
+    from matplotlib.figure import Figure
+    from matplotlib.font_manager import FontProperties
+
+    if not keep_glyphs(RendererAgg(10, 10, 100)):
+        pytest.skip(f"matplotlib {matplotlib.__version__} is not 3.11: no glyphs are kept")
+    compared = 0
+    for dpi in (72, 100, 200):
+        figure = Figure(dpi=dpi)
+        kept, plain = RendererAgg(10, 10, dpi), RendererAgg(10, 10, dpi)
+        keep_glyphs(kept)
+        for family in ("DejaVu Sans", "STIXGeneral", "cmr10"):  # three kinds of metrics
+            for size in (5.0, 8.33, 10.0, 12.0, 14.4):
+                for weight, style in (("normal", "normal"), ("bold", "italic")):
+                    prop = FontProperties(family=family, size=size, weight=weight, style=style)
+                    for text in ("Ag", "two\nlines"):
+                        label = figure.text(0.3, 0.4, text, fontproperties=prop)
+                        assert kept._get_font_height_metrics(prop)[0] is not None
+                        # Extents are the layout's bounds, moved to the text's place.
+                        assert label.get_window_extent(kept).bounds == (
+                            label.get_window_extent(plain).bounds
+                        ), (text, family, size, dpi)
+                        compared += 1
+    assert compared == 180
+    sans = FontProperties(family="sans-serif", size=10)
+    kept = RendererAgg(10, 10, 100)
+    keep_glyphs(kept)
+    first = kept._get_font_height_metrics(sans)
+    with matplotlib.rc_context({"font.sans-serif": ["STIXGeneral"]}):
+        assert kept._get_font_height_metrics(sans) != first  # STIX's own
+        plain = RendererAgg(10, 10, 100)
+        label = Figure(dpi=100).text(0.5, 0.5, "Ag", fontproperties=sans)
+        assert label.get_window_extent(kept).bounds == label.get_window_extent(plain).bounds
+    assert kept._get_font_height_metrics(sans) == first

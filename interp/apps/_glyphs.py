@@ -19,6 +19,12 @@ quotes a slider's value, a new string on every step, 1 ms. The renderer measures
 layout and each glyph's kept box instead, the same numbers (``tests/test_live.py`` compares
 them with matplotlib's for random strings, fonts, sizes and hinting modes).
 
+And before either, matplotlib works out every line's least height: it finds the font again and
+reads two of its tables (``Text._get_layout``), 0.1-0.2 ms for each text measured or drawn,
+some twenty a step in lesson 1. The renderer answers that from what it read the first time
+for the font and size (:meth:`GlyphKeepingRenderer._get_font_height_metrics`, the hook
+matplotlib gives renderers for it), the same numbers.
+
 :class:`GlyphKeepingRenderer` repeats matplotlib 3.11's ``RendererAgg.draw_text`` with the two
 things kept, so it applies to matplotlib 3.11 only; with another version a renderer is left as
 it is.
@@ -31,6 +37,7 @@ import math
 import matplotlib
 import numpy as np
 from matplotlib.backends.backend_agg import RendererAgg, get_hinting_flag
+from matplotlib.font_manager import fontManager, get_font
 from matplotlib.ft2font import LoadFlags, RenderMode
 
 #: Kept layouts and glyph pictures per renderer, at most; then they are dropped and kept anew.
@@ -64,6 +71,7 @@ def keep_glyphs(renderer: RendererAgg) -> bool:
     renderer.layouts = {}
     renderer.glyphs = {}
     renderer.boxes = {}
+    renderer.heights = {}
     return True
 
 
@@ -81,11 +89,47 @@ class GlyphKeepingRenderer(RendererAgg):
     boxes : dict
         (font, size, dpi, glyph, hinting) -> the glyph's bottom and top and its advance, in
         1/64 pixel, for measuring text.
+    heights : dict
+        (font properties, the font families' rcParams, dpi) -> a line's least ascent and
+        descent and the line gap, in pixels.
     """
 
     layouts: dict
     glyphs: dict
     boxes: dict
+    heights: dict
+
+    def _get_font_height_metrics(self, prop: object) -> tuple:
+        """``(ascent, descent, line gap)`` of the font ``prop`` finds, in pixels, as
+        matplotlib 3.11's ``Text._get_layout`` reads them from the font's tables (OS/2, else
+        hhea); ``(None, None, None)`` where it has neither (matplotlib then measures "lp").
+        Kept per font properties, the rcParams that resolve a family to a font (as
+        ``findfont`` keys its own cache), and dpi."""
+        families = tuple(
+            tuple(matplotlib.rcParams[key])
+            for key in ("font.serif", "font.sans-serif", "font.cursive", "font.fantasy",
+                        "font.monospace")
+        )  # fmt: skip
+        key = (hash(prop), families, self.dpi)
+        found = self.heights.get(key)
+        if found is None:
+            if len(self.heights) >= LIMIT:
+                self.heights.clear()
+            font = get_font(fontManager._find_fonts_by_props(prop))
+            found = (None, None, None)
+            for table_name, gap, ascent, descent in (
+                ("OS/2", "sTypoLineGap", "sTypoAscender", "sTypoDescender"),
+                ("hhea", "lineGap", "ascent", "descent"),
+            ):
+                table = font.get_sfnt_table(table_name)
+                if table is None:
+                    continue
+                size = prop.get_size_in_points()
+                scale = 1 / font.get_sfnt_table("head")["unitsPerEm"] * size * self.dpi / 72
+                found = (table[ascent] * scale, -table[descent] * scale, table[gap] * scale)
+                break
+            self.heights[key] = found
+        return found
 
     def draw_text(
         self,
