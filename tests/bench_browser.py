@@ -170,17 +170,11 @@ def last_input(page, kind: str) -> float:
 
 
 def first_frame_after(page, canvas, t: float, timeout: float = 10.0) -> float | None:
-    """Wait for a picture after page time ``t``; its time, or None if none came."""
-    try:
-        page.wait_for_function(
-            "([c, t]) => { const f = window.__probe.last(c); return !!f && f.t > t; }",
-            arg=[canvas, t],
-            timeout=timeout * 1000,
-            polling="raf",
-        )
-    except Exception:  # playwright's TimeoutError
-        return None
-    return page.evaluate("([c, t]) => window.__probe.of(c).find(f => f.t > t).t", [canvas, t])
+    """Wait for a picture after page time ``t``; its time, or None if none came. The probe
+    says when one comes (``probe.after``): nothing polls the page meanwhile."""
+    return page.evaluate(
+        "([c, t, ms]) => window.__probe.after(c, t, ms)", [canvas, t, timeout * 1000]
+    )
 
 
 # ------------------------------------------------------------------------------ the actions
@@ -489,22 +483,32 @@ widgets.HBox([slider, label])
 #: When the label's text changes: the animation frame after, as the probe times pictures.
 FLOOR_PROBE = """() => {
     window.__floor = [];
+    window.__floorWaiters = [];  // told of each change (first_text_after): nothing polls
     const label = document.querySelector('.interp-floor');
-    new MutationObserver(() => requestAnimationFrame(() => window.__floor.push(performance.now())))
-        .observe(label, {subtree: true, childList: true, characterData: true});
+    new MutationObserver(() => requestAnimationFrame(() => {
+        window.__floor.push(performance.now());
+        window.__floorWaiters = window.__floorWaiters.filter((told) => !told());
+    })).observe(label, {subtree: true, childList: true, characterData: true});
 }"""
 
 
 def first_text_after(page, t: float, timeout: float = 10.0) -> float | None:
     """Wait for the floor's label to change after page time ``t`` (:data:`FLOOR_PROBE`); the
     frame's time, or None if it did not."""
-    try:
-        page.wait_for_function(
-            "t => window.__floor.some(x => x > t)", arg=t, timeout=timeout * 1000, polling="raf"
-        )
-    except Exception:  # playwright's TimeoutError
-        return None
-    return page.evaluate("t => window.__floor.find(x => x > t)", t)
+    return page.evaluate(
+        """([t, ms]) => new Promise((resolve) => {
+            const seen = () => window.__floor.find((x) => x > t);
+            if (seen()) return resolve(seen());
+            const stop = setTimeout(() => resolve(null), ms);
+            window.__floorWaiters.push(() => {  // true once told of a change after t
+                if (!seen()) return false;
+                clearTimeout(stop);
+                resolve(seen());
+                return true;
+            });
+        })""",
+        [t, timeout * 1000],
+    )
 
 
 def bench_floor(context, base: str, folder: Path, steps: int) -> dict:

@@ -323,9 +323,27 @@ FRAME_PROBE = r"""
       const {t, h} = queue.shift();
       let list = probe.frames.get(c);
       if (!list) probe.frames.set(c, list = []);
-      if (!list.length || list[list.length - 1].h !== h) list.push({t, h});
+      if (!list.length || list[list.length - 1].h !== h) {
+        list.push({t, h});
+        for (const w of [...probe.waiters]) if (w.c === c && t > w.t) w.done(t);
+      }
     }
   };
+  // Who waits for a new picture (probe.after): told when it is recorded, so that a benchmark
+  // waiting for one does not poll the page in every animation frame (which would keep it
+  // drawing frames a student's page does not draw).
+  probe.waiters = new Set();
+  probe.after = (c, t, ms) => new Promise((resolve) => {
+    const found = (probe.frames.get(c) || []).find((f) => f.t > t);
+    if (found) return resolve(found.t);
+    const w = {c, t, done: (at) => {
+      probe.waiters.delete(w);
+      clearTimeout(w.timer);
+      resolve(at);
+    }};
+    w.timer = setTimeout(() => w.done(null), ms);
+    probe.waiters.add(w);
+  });
   let hasher = null;
   try {
     hasher = new Worker(URL.createObjectURL(new Blob([`
