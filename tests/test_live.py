@@ -150,7 +150,7 @@ def _random_image(rng, kept: bool):
     figure = matplotlib.figure.Figure(figsize=rng.uniform(1, 5, 2), dpi=rng.choice([72, 100, 150]))
     matplotlib.backends.backend_agg.FigureCanvasAgg(figure)
     ax = figure.add_axes([*rng.uniform(0, 0.3, 2), *rng.uniform(0.3, 0.7, 2)])
-    h, w = rng.integers(1, 90, 2)
+    h, w = rng.integers(1, rng.choice([90, 400]), 2)  # larger ones often shown smaller
     kind = rng.choice(["scalar", "rgb", "rgba"])
     data = {"scalar": rng.normal(size=(h, w)), "rgb": rng.uniform(size=(h, w, 3))}.get(
         kind, np.dstack([rng.uniform(size=(h, w, 3)), rng.choice([0.0, 0.4, 1.0], (h, w))])
@@ -159,6 +159,10 @@ def _random_image(rng, kept: bool):
         data = np.where(rng.uniform(size=data.shape) < 0.2, np.nan, data)
     if rng.uniform() < 0.3:
         data = data.astype(np.float32)
+    if rng.uniform() < 0.3:  # masked where there are values (as the apps mask blank pixels)
+        hidden = rng.uniform(size=data.shape[:2]) < 0.3
+        data = np.ma.masked_array(data, np.broadcast_to(hidden[..., None], data.shape)
+                                  if data.ndim == 3 else hidden)  # fmt: skip
     options = {
         "interpolation": "nearest",
         "origin": rng.choice(["upper", "lower"]),
@@ -181,12 +185,13 @@ def _random_image(rng, kept: bool):
 
 
 def test_kept_samples_draw_random_images_as_matplotlib_does():
-    """Images of random shapes, kinds (values, RGB, RGBA with see-through pixels), masks,
-    origins, extents, stages, sizes and clipping: picked from the kept map or drawn by
-    matplotlib, the same pixels as matplotlib's alone."""
+    """Images of random shapes, kinds (values, RGB, RGBA with see-through pixels), masks (NaN
+    or masked values), origins, extents, stages, sizes and clipping: picked from the kept map
+    or drawn by matplotlib, the same pixels as matplotlib's alone. Kept maps of images shown on
+    fewer screen pixels than they have are picked before they are coloured, the others after."""
     if not keep_samples(matplotlib.image.AxesImage(matplotlib.figure.Figure().add_subplot())):
         pytest.skip(f"matplotlib {matplotlib.__version__} is not 3.11: no samples are kept")
-    picked = 0
+    picked = fewer = 0
     for seed in range(60):
         (kept, image), (plain, _) = (
             _random_image(np.random.default_rng(seed), kept=True),
@@ -199,8 +204,12 @@ def test_kept_samples_draw_random_images_as_matplotlib_does():
             np.asarray(plain.canvas.buffer_rgba()),
             err_msg=f"seed {seed}",
         )
-        picked += any(picks is not None for picks in image.samples.values())
+        maps = [picks for picks in image.samples.values() if picks is not None]
+        picked += bool(maps)
+        fewer += any(picks.size < image.get_array().shape[0] * image.get_array().shape[1]
+                     for picks in maps)  # fmt: skip
     assert picked >= 30, f"only {picked} of 60 images were drawn from a kept map"
+    assert fewer >= 10, f"only {fewer} of 60 images were picked before they were coloured"
 
 
 def test_changed_limits_redraw_the_whole_figure():

@@ -98,6 +98,11 @@ class SampledImage(AxesImage):
         picks = self.samples[key]
         if picks is None:
             return None
+        if picks.size < A.shape[0] * A.shape[1]:  # fewer screen pixels: pick, then colour
+            rgba = self._colours(A, t, picks, out_shape)
+            if rgba is None:
+                return None
+            return rgba, corner[0], corner[1], t
         rgba = self._colours(A, t)
         if rgba is None:
             return None
@@ -161,11 +166,24 @@ class SampledImage(AxesImage):
             return None
         return (picked.astype(np.intp) - 1).ravel()
 
-    def _colours(self, A: np.ma.MaskedArray, t: Affine2D) -> np.ndarray | None:
+    def _colours(
+        self,
+        A: np.ma.MaskedArray,
+        t: Affine2D,
+        picks: np.ndarray | None = None,
+        out_shape: tuple[int, int] | None = None,
+    ) -> np.ndarray | None:
         """The image's pixels coloured as ``_make_image`` colours its resampled copy, uint8
         RGBA: the same numpy steps, each of which works pixel by pixel, in the same order
-        (None where matplotlib would scale the colours to what it resampled)."""
-        if A.ndim == 2 and self._stage(A, t) == "data":
+        (None where matplotlib would scale the colours to what it resampled). With ``picks``
+        (flat indices) only those pixels, as an ``out_shape`` image: what is decided from the
+        whole image (the stage, the colour scale's limits) is decided first."""
+        stage = self._stage(A, t) if A.ndim == 2 else "rgba"
+        if A.ndim == 2 and stage == "rgba":
+            self.norm.autoscale_None(A)  # the limits of the whole image, before any picking
+        if picks is not None:
+            A = _pick(A, picks, out_shape)
+        if A.ndim == 2 and stage == "data":
             scaled = np.ma.getdata(A).astype(np.dtype("f8" if A.dtype.itemsize > 4 else "f4"))
             if isinstance(self.norm, colors.NoNorm):
                 scaled = scaled.astype(A.dtype)
@@ -174,8 +192,7 @@ class SampledImage(AxesImage):
             # The mask's coverage is 1 on every screen pixel (see _map): alpha stays as it is.
             normed = self.norm(np.ma.masked_array(scaled, np.ma.getmaskarray(A)))
             return self.to_rgba(normed, bytes=True, norm=False)
-        if A.ndim == 2:  # stage "rgba"
-            self.norm.autoscale_None(A)
+        if A.ndim == 2:  # stage "rgba"; the limits are set above
             lut = getattr(self.cmap, "_lut", None)
             if lut is not None and np.isin(lut[:, 3], (0.0, 1.0)).all():
                 # Every pixel opaque or clear: the premultiplying below leaves the opaque
@@ -208,3 +225,18 @@ class SampledImage(AxesImage):
         dispx = np.abs(np.diff(disp[:, 0])) / A.shape[1]
         dispy = np.abs(np.diff(disp[:, 1])) / A.shape[0]
         return "rgba" if (dispx < 3) or (dispy < 3) else "data"
+
+
+def _pick(A: np.ma.MaskedArray, picks: np.ndarray, shape: tuple[int, int]) -> np.ma.MaskedArray:
+    """The pixels of ``A`` (H, W) or (H, W, C) at the flat indices ``picks``, as a ``shape``
+    image with their mask (a plain array stays plain)."""
+    channels = A.shape[2:]
+    data = np.ma.getdata(A).reshape(-1, *channels).take(picks, axis=0).reshape(*shape, *channels)
+    if not isinstance(A, np.ma.MaskedArray):
+        return data
+    mask = np.ma.getmask(A)
+    if mask is np.ma.nomask:
+        return np.ma.masked_array(data)
+    return np.ma.masked_array(
+        data, mask.reshape(-1, *channels).take(picks, axis=0).reshape(data.shape)
+    )
