@@ -256,6 +256,28 @@ def test_every_figure_fits_a_laptop_and_a_projector(name):
     assert width <= FIT_PRESENTATION[0] and height <= FIT_PRESENTATION[1]
 
 
+def test_controls_do_not_echo_what_the_page_sends_but_send_what_the_kernel_sets():
+    """ipywidgets 8 echoes each value a page sends (one more message per mouse move of a
+    drag); an app's controls do not, while a plain slider still does, and a value set in the
+    kernel still goes to the page."""
+    app = apps.checkerboards_outside()
+    plain = widgets.FloatSlider(1.0)
+    for widget in [*app.controls.values(), plain]:
+        sent = []
+        widget._send = lambda message, buffers=None, sent=sent: sent.append(message["method"])
+        old = widget.value
+        if isinstance(widget, widgets.Dropdown):  # a page sends a drop-down's index
+            new = next(o for o in widget.options if o != old)
+            widget.set_state({"index": widget.options.index(new)})
+        else:
+            new = widget.base**widget.max if hasattr(widget, "base") else widget.max
+            widget.set_state({"value": new})  # as a page's change arrives
+        assert widget.value == new
+        widget.value = old  # as App.set does
+        expected = ["echo_update", "update"] if widget is plain else ["update"]
+        assert sent == expected, (widget.description, sent)
+
+
 def test_unknown_control_is_named():
     with pytest.raises(TypeError, match="no control named 'pitchh'"):
         apps.checkerboards().set(pitchh=3)

@@ -259,20 +259,48 @@ class App:
 
 
 def control(param: Param) -> widgets.ValueWidget:
-    """The widget for one parameter: a drop-down for choices, else a slider."""
+    """The widget for one parameter: a drop-down for choices, else a slider; its value not
+    echoed (:func:`no_echo`)."""
     if param.options is not None:
-        return choice(str(param.default), param.options, param.label)
+        return no_echo(choice(str(param.default), param.options, param.label))
     if param.kind is int:
-        return int_slider(int(param.default), int(param.low), int(param.high), param.label)
-    return slider(
-        float(param.default),
-        float(param.low),
-        float(param.high),
-        float(param.step),
-        param.label,
-        log=param.log,
-        readout_format=param.fmt,
+        return no_echo(int_slider(int(param.default), int(param.low), int(param.high), param.label))
+    return no_echo(
+        slider(
+            float(param.default),
+            float(param.low),
+            float(param.high),
+            float(param.step),
+            param.label,
+            log=param.log,
+            readout_format=param.fmt,
+        )
     )
+
+
+def no_echo(widget: widgets.ValueWidget) -> widgets.ValueWidget:
+    """``widget``, whose kernel side no longer echoes each value the page sends back to it.
+
+    ipywidgets 8 answers every change made in a page with an ``echo_update`` message, so that
+    other pages showing the same kernel's widget follow. A slider dragged sends a change per
+    mouse move; each echo was one more message for the kernel to send, the server to pass on
+    and the page to take in, on the two cores the kernel's drawing shares. An app's controls
+    live in one page (a student's, or a teacher's projector), so the echo of their ``value``
+    is turned off, as ipywidgets lets a trait do (its ``echo_update`` metadata), for this
+    widget only: a second browser tab on the same kernel no longer follows a slider dragged in
+    the first. Values set in the kernel (``App.set``) still reach the page. (traitlets reads
+    a widget's own ``_<trait>_metadata`` before the trait's.)
+
+    Examples
+    --------
+    >>> slider = no_echo(widgets.IntSlider(3))
+    >>> slider.trait_metadata("value", "echo_update"), slider.trait_metadata("value", "sync")
+    (False, True)
+    """
+    for name in ("value", "index"):  # what a page changes: a drop-down sends its index
+        if widget.has_trait(name) and widget.trait_metadata(name, "sync"):
+            setattr(widget, f"_{name}_metadata", {"echo_update": False})  # for this one only
+    return widget
 
 
 def slider(
