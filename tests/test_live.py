@@ -88,7 +88,7 @@ def test_kept_glyphs_draw_text_as_matplotlib_does(name):
     app, at three settings of its first slider, is the figure matplotlib draws alone, pixel
     for pixel (rotated axis labels, mathtext and titles included)."""
     kept, plain = apps.ALL[name](), apps.ALL[name]()
-    if not keep_glyphs(kept.figure.canvas.get_renderer()):
+    if not keep_glyphs(kept.figure.canvas.get_renderer(), kept.figure):
         pytest.skip(f"matplotlib {matplotlib.__version__} is not 3.11: no glyphs are kept")
     assert_draws_alike(kept, plain, name)
     assert kept.figure.canvas.get_renderer().glyphs, "no glyph was kept"
@@ -177,6 +177,8 @@ def _random_image(rng, kept: bool):
         x0, y0 = rng.uniform(-5, 5, 2)
         options["extent"] = (x0, x0 + rng.choice([-1, 1]) * rng.uniform(1, 9), y0, y0 + 3)
     image = ax.imshow(data, **options)
+    if kind == "scalar" and rng.uniform() < 0.3:  # limits set from the whole image when drawn
+        image.norm.vmin = image.norm.vmax = None
     if rng.uniform() < 0.3:  # the image reaches past the axes, clipped
         ax.set_xlim(*np.sort(rng.uniform(-3, 60, 2)))
     if kept:
@@ -693,8 +695,10 @@ def test_kept_font_heights_lay_text_out_as_matplotlib_does():
     """A live renderer answers a line's least ascent and descent, which matplotlib reads from
     the font's tables for every text it lays out, from what it read the first time: text laid
     out with it has matplotlib's extent to the last bit, for three fonts, bold and italic,
-    five sizes, three resolutions, one and two lines; and a change of the rcParams that
-    resolve a family to a font is a new font (not the kept one)."""
+    five sizes, three resolutions, one and two lines, also measured at another dpi
+    (``get_window_extent(dpi=...)``, which sets the figure's for a moment); a change of the
+    rcParams that resolve a family to a font is a new font (not the kept one); and without
+    the figure, matplotlib works the heights out itself."""
     from matplotlib.backends.backend_agg import RendererAgg
     from matplotlib.figure import Figure
     from matplotlib.font_manager import FontProperties
@@ -705,7 +709,7 @@ def test_kept_font_heights_lay_text_out_as_matplotlib_does():
     for dpi in (72, 100, 200):
         figure = Figure(dpi=dpi)
         kept, plain = RendererAgg(10, 10, dpi), RendererAgg(10, 10, dpi)
-        keep_glyphs(kept)
+        keep_glyphs(kept, figure)
         for family in ("DejaVu Sans", "STIXGeneral", "cmr10"):  # three kinds of metrics
             for size in (5.0, 8.33, 10.0, 12.0, 14.4):
                 for weight, style in (("normal", "normal"), ("bold", "italic")):
@@ -717,11 +721,17 @@ def test_kept_font_heights_lay_text_out_as_matplotlib_does():
                         assert label.get_window_extent(kept).bounds == (
                             label.get_window_extent(plain).bounds
                         ), (text, family, size, dpi)
+                        label._renderer = kept  # what a measure at another dpi uses
+                        at_150 = label.get_window_extent(dpi=150).bounds
+                        label._renderer = plain
+                        assert at_150 == label.get_window_extent(dpi=150).bounds
                         compared += 1
     assert compared == 180
     sans = FontProperties(family="sans-serif", size=10)
     kept = RendererAgg(10, 10, 100)
     keep_glyphs(kept)
+    assert kept._get_font_height_metrics(sans) == (None, None, None)  # no figure: matplotlib's
+    keep_glyphs(kept, Figure(dpi=100))
     first = kept._get_font_height_metrics(sans)
     with matplotlib.rc_context({"font.sans-serif": ["STIXGeneral"]}):
         assert kept._get_font_height_metrics(sans) != first  # STIX's own

@@ -37,6 +37,7 @@ import math
 import matplotlib
 import numpy as np
 from matplotlib.backends.backend_agg import RendererAgg, get_hinting_flag
+from matplotlib.figure import Figure
 from matplotlib.font_manager import fontManager, get_font
 from matplotlib.ft2font import LoadFlags, RenderMode
 
@@ -48,8 +49,10 @@ MATPLOTLIB = (3, 11)
 APPLIES = tuple(int(part) for part in matplotlib.__version__.split(".")[:2]) == MATPLOTLIB
 
 
-def keep_glyphs(renderer: RendererAgg) -> bool:
+def keep_glyphs(renderer: RendererAgg, figure: Figure | None = None) -> bool:
     """Make ``renderer`` a :class:`GlyphKeepingRenderer`; whether it is one (it may already).
+    ``figure``, the figure it draws, lets it answer line heights too (they scale with the
+    figure's dpi, which a measure may set apart from the renderer's).
 
     Examples
     --------
@@ -64,6 +67,7 @@ def keep_glyphs(renderer: RendererAgg) -> bool:
     4
     """
     if isinstance(renderer, GlyphKeepingRenderer):
+        renderer.root_figure = figure or renderer.root_figure
         return True
     if type(renderer) is not RendererAgg or not APPLIES:
         return False
@@ -72,6 +76,7 @@ def keep_glyphs(renderer: RendererAgg) -> bool:
     renderer.glyphs = {}
     renderer.boxes = {}
     renderer.heights = {}
+    renderer.root_figure = figure
     return True
 
 
@@ -90,8 +95,10 @@ class GlyphKeepingRenderer(RendererAgg):
         (font, size, dpi, glyph, hinting) -> the glyph's bottom and top and its advance, in
         1/64 pixel, for measuring text.
     heights : dict
-        (font properties, the font families' rcParams, dpi) -> a line's least ascent and
-        descent and the line gap, in pixels.
+        (font properties, the font families' rcParams, the fonts known, dpi) -> a line's
+        least ascent and descent and the line gap, in pixels.
+    root_figure : Figure or None
+        The figure drawn, whose dpi line heights scale with; None: matplotlib works them out.
     """
 
     layouts: dict
@@ -104,13 +111,17 @@ class GlyphKeepingRenderer(RendererAgg):
         matplotlib 3.11's ``Text._get_layout`` reads them from the font's tables (OS/2, else
         hhea); ``(None, None, None)`` where it has neither (matplotlib then measures "lp").
         Kept per font properties, the rcParams that resolve a family to a font (as
-        ``findfont`` keys its own cache), and dpi."""
+        ``findfont`` keys its own cache), the fonts known, and the figure's dpi (matplotlib
+        scales by the figure's, which ``get_window_extent(dpi=...)`` sets for a moment)."""
+        if self.root_figure is None:
+            return (None, None, None)  # matplotlib reads the tables itself
+        dpi = self.root_figure.dpi
         families = tuple(
             tuple(matplotlib.rcParams[key])
             for key in ("font.serif", "font.sans-serif", "font.cursive", "font.fantasy",
                         "font.monospace")
         )  # fmt: skip
-        key = (hash(prop), families, self.dpi)
+        key = (hash(prop), families, len(fontManager.ttflist), dpi)
         found = self.heights.get(key)
         if found is None:
             if len(self.heights) >= LIMIT:
@@ -125,7 +136,7 @@ class GlyphKeepingRenderer(RendererAgg):
                 if table is None:
                     continue
                 size = prop.get_size_in_points()
-                scale = 1 / font.get_sfnt_table("head")["unitsPerEm"] * size * self.dpi / 72
+                scale = 1 / font.get_sfnt_table("head")["unitsPerEm"] * size * dpi / 72
                 found = (table[ascent] * scale, -table[descent] * scale, table[gap] * scale)
                 break
             self.heights[key] = found

@@ -292,7 +292,7 @@ class Blitter:
     def draw(self) -> None:
         """Show the figure's current state."""
         canvas = self.figure.canvas
-        keep_glyphs(canvas.get_renderer())  # anew when the size changes the renderer
+        keep_glyphs(canvas.get_renderer(), self.figure)  # anew when the size changes it
         if self.dynamic is None:
             self.full_draws += 1
             canvas.draw()
