@@ -7,7 +7,8 @@ has Agg resample it (with a mask for the coverage), 1.5-3.5 ms for a 320x240 ras
 Which pixel lands where depends only on the image's shape and where it is drawn, not on its
 values. :func:`keep_samples` makes an image keep that map: the first draw at a place asks
 matplotlib's own resampler which pixel each screen pixel takes (it resamples the pixels'
-numbers), later draws colour the image and pick (about 1 ms).
+numbers), later draws colour the image and pick (about 1 ms), or, shown on fewer screen
+pixels than it has, pick and then colour only what was picked.
 
 Kept only where that is exactly what matplotlib draws: a nearest-neighbour image of floats on
 an affine transform, with no alpha of its own, every screen pixel fully covered (the map shows
