@@ -499,13 +499,17 @@ def first_text_after(page, t: float, timeout: float = 10.0) -> float | None:
         """([t, ms]) => new Promise((resolve) => {
             const seen = () => window.__floor.find((x) => x > t);
             if (seen()) return resolve(seen());
-            const stop = setTimeout(() => resolve(null), ms);
-            window.__floorWaiters.push(() => {  // true once told of a change after t
+            const told = () => {  // true once told of a change after t
                 if (!seen()) return false;
                 clearTimeout(stop);
                 resolve(seen());
                 return true;
-            });
+            };
+            const stop = setTimeout(() => {  // none: no longer waiting
+                window.__floorWaiters = window.__floorWaiters.filter((w) => w !== told);
+                resolve(null);
+            }, ms);
+            window.__floorWaiters.push(told);
         })""",
         [t, timeout * 1000],
     )
