@@ -289,7 +289,8 @@ def no_echo(widget: widgets.ValueWidget) -> widgets.ValueWidget:
     is turned off, as ipywidgets lets a trait do (its ``echo_update`` metadata), for this
     widget only: a second browser tab on the same kernel no longer follows a slider dragged in
     the first. Values set in the kernel (``App.set``) still reach the page. (traitlets reads
-    a widget's own ``_<trait>_metadata`` before the trait's.)
+    a widget's own ``_<trait>_metadata`` before the trait's; a ``Union`` trait would write
+    over it, which the controls' value traits are not.)
 
     Examples
     --------
