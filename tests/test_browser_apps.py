@@ -23,6 +23,7 @@ PYTHONPATH), whatever the environment has installed; a test checks that they do.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import time
 
@@ -336,6 +337,19 @@ def test_frames_are_not_encoded_again_until_they_stop(lesson, request):
     root = app_root(page, name)
     canvas = figure_canvas(root).element_handle()
     start = drag_back_and_forth(page, root, name)
+    # The picture is encoded 300 ms after the last frame's decode: on a loaded machine a timer
+    # may fire late, or a late frame start it again. Wait (at most 10 s) for an encoding after
+    # the last picture recorded; whether it is the picture on show is asserted below.
+    with contextlib.suppress(Exception):  # playwright's TimeoutError: the asserts below say
+        page.wait_for_function(
+            """(c) => {
+                const last = window.__probe.last(c);
+                return !!last && window.__probe.dataUrls.some((e) => e.t > last.t);
+            }""",
+            arg=canvas,
+            timeout=10_000,
+            polling=100,
+        )
     frames = page.evaluate(
         "([c, a]) => window.__probe.of(c).filter(f => f.t > a).map(f => f.t)", [canvas, start]
     )
