@@ -480,37 +480,21 @@ slider.observe(lambda change: setattr(label, "value", str(change["new"])), "valu
 widgets.HBox([slider, label])
 """
 
-#: When the label's text changes: the animation frame after, as the probe times pictures.
+#: When the label's text changes: the animation frame after, recorded as the probe records
+#: pictures (``probe.record``, with the text for the picture).
 FLOOR_PROBE = """() => {
-    window.__floor = [];
-    window.__floorWaiters = [];  // told of each change (first_text_after): nothing polls
     const label = document.querySelector('.interp-floor');
-    new MutationObserver(() => requestAnimationFrame(() => {
-        window.__floor.push(performance.now());
-        window.__floorWaiters = window.__floorWaiters.filter((told) => !told());
-    })).observe(label, {subtree: true, childList: true, characterData: true});
+    new MutationObserver(() => requestAnimationFrame(
+        () => window.__probe.record(label, performance.now(), label.textContent)
+    )).observe(label, {subtree: true, childList: true, characterData: true});
 }"""
 
 
 def first_text_after(page, t: float, timeout: float = 10.0) -> float | None:
     """Wait for the floor's label to change after page time ``t`` (:data:`FLOOR_PROBE`); the
-    frame's time, or None if it did not."""
+    frame's time, or None if it did not (``probe.after``: nothing polls the page)."""
     return page.evaluate(
-        """([t, ms]) => new Promise((resolve) => {
-            const seen = () => window.__floor.find((x) => x > t);
-            if (seen()) return resolve(seen());
-            const told = () => {  // true once told of a change after t
-                if (!seen()) return false;
-                clearTimeout(stop);
-                resolve(seen());
-                return true;
-            };
-            const stop = setTimeout(() => {  // none: no longer waiting
-                window.__floorWaiters = window.__floorWaiters.filter((w) => w !== told);
-                resolve(null);
-            }, ms);
-            window.__floorWaiters.push(told);
-        })""",
+        "([t, ms]) => window.__probe.after(document.querySelector('.interp-floor'), t, ms)",
         [t, timeout * 1000],
     )
 

@@ -321,18 +321,21 @@ FRAME_PROBE = r"""
     const queue = waiting.get(c);
     while (queue.length && queue[0].h !== undefined) {
       const {t, h} = queue.shift();
-      let list = probe.frames.get(c);
-      if (!list) probe.frames.set(c, list = []);
-      if (!list.length || list[list.length - 1].h !== h) {
-        list.push({t, h});
-        for (const w of [...probe.waiters]) if (w.c === c && t > w.t) w.done(t);
-      }
+      probe.record(c, t, h);
     }
   };
-  // Who waits for a new picture (probe.after): told when it is recorded, so that a benchmark
-  // waiting for one does not poll the page in every animation frame (which would keep it
-  // drawing frames a student's page does not draw).
+  // Record that element c shows h (a picture's hash, or a label's text) from time t, if it
+  // showed something else before, and tell whoever waits for it (probe.after): a benchmark
+  // waiting does not poll the page in every animation frame (which would keep it drawing
+  // frames a student's page does not draw).
   probe.waiters = new Set();
+  probe.record = (c, t, h) => {
+    let list = probe.frames.get(c);
+    if (!list) probe.frames.set(c, list = []);
+    if (list.length && list[list.length - 1].h === h) return;
+    list.push({t, h});
+    for (const w of [...probe.waiters]) if (w.c === c && t > w.t) w.done(t);
+  };
   probe.after = (c, t, ms) => new Promise((resolve) => {
     const found = (probe.frames.get(c) || []).find((f) => f.t > t);
     if (found) return resolve(found.t);
