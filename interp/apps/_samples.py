@@ -99,16 +99,14 @@ class SampledImage(AxesImage):
         picks = self.samples[key]
         if picks is None:
             return None
-        if picks.size < A.shape[0] * A.shape[1]:  # fewer screen pixels: pick, then colour
-            rgba = self._colours(A, t, picks, out_shape)
-            if rgba is None:
-                return None
-            return rgba, corner[0], corner[1], t
-        rgba = self._colours(A, t)
+        first = picks.size < A.shape[0] * A.shape[1]  # fewer screen pixels: pick, then colour
+        rgba = self._colours(A, t, picks, out_shape) if first else self._colours(A, t)
         if rgba is None:
             return None
-        out = rgba.reshape(-1, 4).view(np.uint32)[:, 0].take(picks)
-        return out.view(np.uint8).reshape(*out_shape, 4), corner[0], corner[1], t
+        if not first:
+            out = rgba.reshape(-1, 4).view(np.uint32)[:, 0].take(picks)
+            rgba = out.view(np.uint8).reshape(*out_shape, 4)
+        return rgba, corner[0], corner[1], t
 
     def _place(self, magnification: float) -> tuple | None:
         """Where the image lands: the same geometry as ``_make_image`` (rounded to whole
