@@ -7,11 +7,13 @@ import inspect
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 import interp
 from interp import plots
-from interp.plots._base import Plot
+from interp.apps._glyphs import keep_glyphs
+from interp.plots._base import Plot, label
 from interp.plots.registry import BARYCENTRIC_CAMERA, FIGURES, midpoint_title
 from interp.raster import viewport
 from interp.scenes import LESSON_SIZE
@@ -151,3 +153,41 @@ def test_contour_lines_skip_masked_nan_and_infinite_pixels():
     lines = contour_segments(image, [0.5, 0.75, 0.95])
     assert len(lines) == 1
     np.testing.assert_allclose(lines[0][:, 0], 5.0)  # x = column 5, where the ramp is 0.5
+
+
+def test_labels_start_on_whole_pixels_within_half_a_pixel_of_annotate():
+    """A label (``interp.plots._base.label``) is ``annotate``'s text moved to the nearest whole
+    pixel, wherever its point is, on linear and log axes alike."""
+    rng = np.random.default_rng(7)
+    for scale in ("linear", "log"):
+        ax = FigureCanvasAgg(Figure(dpi=100)).figure.subplots()
+        ax.set_xscale(scale)
+        ax.set_xlim(0.1, 10)
+        ax.set_ylim(0, 1)
+        renderer = ax.figure.canvas.get_renderer()
+        for x, y in zip(rng.uniform(0.1, 10, 50), rng.uniform(0, 1, 50), strict=True):
+            ours = label(ax, "N=4", (x, y), (4, 2))
+            theirs = ax.annotate("N=4", (x, y), xytext=(4, 2), textcoords="offset points")
+            ours_box, theirs_box = (a.get_window_extent(renderer) for a in (ours, theirs))
+            shift = ours_box.p0 - theirs_box.p0
+            assert np.all(np.abs(shift) <= 0.5)
+            assert np.allclose(ours_box.size, theirs_box.size)
+            anchor = ours.get_transform().transform(ours.xyann)
+            assert np.allclose(anchor, np.round(anchor), rtol=0, atol=1e-9)
+            assert np.allclose(anchor - shift, theirs.get_transform().transform(theirs.xyann))
+
+
+def test_a_label_that_moves_is_drawn_from_the_glyphs_kept():
+    """A label following a point by fractions of a pixel needs no new glyph pictures in a live
+    figure: on whole pixels its glyphs are the same pictures wherever it goes."""
+    figure = FigureCanvasAgg(Figure(dpi=100)).figure
+    ax = figure.subplots()
+    note = label(ax, "n=16", (0.5, 0.5), (4, 2))
+    renderer = figure.canvas.get_renderer()
+    assert keep_glyphs(renderer, figure)
+    figure.draw(renderer)
+    kept = len(renderer.glyphs)
+    for x in np.linspace(0.2, 0.8, 25):
+        note.xy = (x, x / 3)
+        note.draw(renderer)
+    assert len(renderer.glyphs) == kept

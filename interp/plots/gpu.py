@@ -11,7 +11,7 @@ from matplotlib.collections import LineCollection
 
 from interp import approximation, shaders
 from interp.camera import Camera
-from interp.plots._base import Plot, place_pixels
+from interp.plots._base import Plot, label, place_pixels
 from interp.plots._style import AFFINE, CORRECT, bare
 from interp.raster import fragments, interpolate, viewport
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
@@ -217,11 +217,11 @@ class ApproximationLab(Plot):
         # annotation_clip does (1-2 ms a frame for the twelve).
         self.labelled: set[tuple] = set()
         self.notes = {
-            (line, setting): ax.annotate(
+            (line, setting): label(
+                ax,
                 template.format(setting),
                 (1, 1),
-                xytext=(4, 2),
-                textcoords="offset points",
+                (4, 2),
                 fontsize="x-small",
                 color=line.get_color(),
                 visible=False,

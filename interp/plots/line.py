@@ -12,7 +12,7 @@ from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 
 from interp import lerp
-from interp.plots._base import Plot
+from interp.plots._base import Plot, label
 from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery, nice_ceiling
 
 Point = tuple[float, float]
@@ -94,11 +94,11 @@ class LineView(Plot):
             )[0],
         }
         self.labels = {
-            name: ax.annotate(
+            name: label(
+                ax,
                 name,
                 (0, 0),
-                xytext=(6, 4) if name.isupper() else (-10, -3),
-                textcoords="offset points",
+                (6, 4) if name.isupper() else (-10, -3),
                 fontsize="medium" if name.isupper() else "small",
             )
             for name in ("A", "B", "M", "C", "a", "b", "m", "c")
