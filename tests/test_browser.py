@@ -23,6 +23,7 @@ from browser import (
     ROOT,
     SCREENSHOTS,
     free_port,
+    kernel_run,
     server,
     server_nodelay,
     steady_box,
@@ -367,6 +368,16 @@ def wait_for_new_text(locator, old: str, seconds: float = 20.0) -> str:
     raise AssertionError(f"the readout still says {old!r}")
 
 
+#: Kernel code: every pitch slider's description changed.
+RENAME_PITCH = """
+import ipywidgets
+from ipywidgets.widgets.widget import _instances
+for widget in list(_instances.values()):
+    if isinstance(widget, ipywidgets.FloatSlider) and widget.description == "pitch (deg)":
+        widget.description = "pitch, renamed"
+"""
+
+
 def test_the_readout_is_live_text_that_follows_a_slider_named_for_screen_readers(lab, page):
     canvas = open_and_run(page, lab, "06_checkerboards.ipynb")
     wait_until_drawn(canvas)
@@ -380,6 +391,11 @@ def test_the_readout_is_live_text_that_follows_a_slider_named_for_screen_readers
     assert sliders.count() >= 10
     for k in range(sliders.count()):
         assert sliders.nth(k).get_attribute("aria-label"), f"slider {k} has no name"
+    # ...and named again when its description changes (a label's text, no element added).
+    kernel_run(page, RENAME_PITCH)
+    page.locator('[role="slider"][aria-label="pitch, renamed"]').first.wait_for(
+        state="attached", timeout=10_000
+    )
     # The dropdowns are named by their labels already (a <label for=...> beside a <select>).
     dropdowns = page.locator(f"{VISIBLE} .widget-dropdown select")
     named = [

@@ -38,7 +38,8 @@ _PRESENTATION = {"on": os.environ.get("INTERP_PRESENTATION") == "1"}
 #: Names every slider for screen readers. ipywidgets draws a slider's handle as an element of
 #: role "slider" (with its value) but leaves it nameless, and the description beside it is not
 #: tied to it; this sets the handle's ``aria-label`` to that description, for sliders drawn now
-#: and later (one observer per page).
+#: and later (one observer per page, which looks only when elements are added or a label
+#: changes).
 SLIDER_NAMES_JS = """
 (() => {
   if (window.interpNameSliders) { window.interpNameSliders(); return; }
@@ -53,7 +54,14 @@ SLIDER_NAMES_JS = """
     }
   };
   window.interpNameSliders = nameSliders;
-  new MutationObserver(nameSliders).observe(document.body, {childList: true, subtree: true});
+  // Looked at again when elements are added (a slider drawn) or a label's text changes; not
+  // for the text a slider step changes (its readout, the kernel's status, a prompt), as each
+  // look goes through the whole page.
+  const mayName = (mutation) =>
+    (mutation.target.closest && mutation.target.closest('.widget-label'))
+    || Array.from(mutation.addedNodes).some((node) => node.nodeType === Node.ELEMENT_NODE);
+  new MutationObserver((mutations) => { if (mutations.some(mayName)) nameSliders(); })
+      .observe(document.body, {childList: true, subtree: true});
   nameSliders();
 })();
 """
