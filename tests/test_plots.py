@@ -175,6 +175,8 @@ def test_labels_start_on_whole_pixels_within_half_a_pixel_of_annotate():
             anchor = ours.get_transform().transform(ours.xyann)
             assert np.allclose(anchor, np.round(anchor), rtol=0, atol=1e-9)
             assert np.allclose(anchor - shift, theirs.get_transform().transform(theirs.xyann))
+    with pytest.raises(TypeError, match="arrowprops"):
+        label(ax, "N=4", (1, 0.5), (4, 2), arrowprops={})
 
 
 def test_a_label_that_moves_is_drawn_from_the_glyphs_kept():
