@@ -175,8 +175,29 @@ def test_labels_start_on_whole_pixels_within_half_a_pixel_of_annotate():
             anchor = ours.get_transform().transform(ours.xyann)
             assert np.allclose(anchor, np.round(anchor), rtol=0, atol=1e-9)
             assert np.allclose(anchor - shift, theirs.get_transform().transform(theirs.xyann))
+            # Clipped (or not) as annotate's, so as far outside the axes.
+            assert ours.get_clip_on() == theirs.get_clip_on()
+            assert ours.get_clip_box() is theirs.get_clip_box()
+            assert ours.get_clip_path() is theirs.get_clip_path()
+            tight = ours.get_tightbbox(renderer).p0 - theirs.get_tightbbox(renderer).p0
+            assert np.all(np.abs(tight) <= 0.5)
     with pytest.raises(TypeError, match="arrowprops"):
         label(ax, "N=4", (1, 0.5), (4, 2), arrowprops={})
+
+
+def test_a_label_reaches_outside_its_axes_as_annotate_does():
+    """A label at the axes' corner is drawn beyond it (annotate does not clip), and a label at
+    a position that is not finite draws nothing, without an error (as annotate)."""
+    figure = FigureCanvasAgg(Figure(figsize=(2, 2), dpi=100)).figure
+    ax = figure.add_axes((0.1, 0.1, 0.6, 0.6))
+    label(ax, "ABC", (0.99, 0.99), (6, 4), color="black")
+    label(ax, "N", (np.nan, 0.5), (4, 2), annotation_clip=False)
+    label(ax, "N", (0.5, np.inf), (4, 2), annotation_clip=False)
+    figure.canvas.draw()
+    pixels = np.asarray(figure.canvas.buffer_rgba())[..., :3].min(axis=2)
+    top = round(figure.bbox.height - ax.bbox.y1)  # the axes' top edge, in rows from the top
+    right = round(ax.bbox.x1)
+    assert (pixels[: top - 2, right + 2 :] < 128).sum() > 20  # ink above and right of it
 
 
 def test_a_label_that_moves_is_drawn_from_the_glyphs_kept():

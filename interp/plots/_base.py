@@ -7,6 +7,8 @@ with, so a typo raises instead of being silently ignored.
 
 from __future__ import annotations
 
+import math
+
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
 from matplotlib.image import AxesImage
@@ -52,29 +54,34 @@ def place_pixels(image: AxesImage, width: int, height: int) -> None:
 
 
 class PixelLabel(Annotation):
-    """An annotation, with no arrow, whose text starts on a whole pixel (see :func:`label`)."""
+    """An annotation, with no arrow, whose text is anchored on a whole pixel (see
+    :func:`label`)."""
 
     def update_positions(self, renderer: object) -> None:
         """Place the text as :class:`~matplotlib.text.Annotation` does, then move it by less
-        than half a pixel, to the nearest whole one."""
+        than half a pixel, to anchor it on the nearest whole one (a position that is not
+        finite is left as it is: matplotlib draws nothing there)."""
         super().update_positions(renderer)
         transform = self.get_transform()
         x, y = transform.transform(self.xyann)
-        self.set_transform(transform + Affine2D().translate(round(x) - x, round(y) - y))
+        if math.isfinite(x) and math.isfinite(y):
+            self.set_transform(transform + Affine2D().translate(round(x) - x, round(y) - y))
 
 
 def label(
     ax: Axes, text: str, xy: tuple[float, float], offset: tuple[float, float], **kwargs: object
 ) -> PixelLabel:
     """``ax.annotate(text, xy, xytext=offset, textcoords="offset points", **kwargs)``, with the
-    text moved to the nearest whole pixel: a label that follows a point a slider moves.
+    text moved to anchor it on the nearest whole pixel: a label that follows a point a slider
+    moves.
 
     matplotlib places text a fraction of a pixel anywhere, and renders each glyph for its place
     within a pixel; a live figure keeps those pictures (:mod:`interp.apps._glyphs`), but a
     label that moves by fractions of a pixel needs new ones at every step (the approximation
-    lab's thirteen labels: forty new pictures, 4.6 ms a step). On a whole pixel, a label's
-    glyphs are the same pictures wherever it goes, and it is at most half a pixel from where
-    ``annotate`` puts it.
+    lab's thirteen labels: forty new pictures, 4.6 ms a step). Anchored on a whole pixel, a
+    label's glyphs keep their places within a pixel wherever it goes (their offsets from the
+    anchor are the string's own), so they are the same pictures; the label is at most half a
+    pixel from where ``annotate`` puts it.
 
     Examples
     --------
@@ -90,9 +97,11 @@ def label(
     if "arrowprops" in kwargs:  # the arrow would point from where annotate put the text
         raise TypeError("label draws no arrow: arrowprops is for ax.annotate")
     note = PixelLabel(text, xy, xytext=offset, textcoords="offset points", **kwargs)
-    note.set_transform(IdentityTransform())  # as Axes.annotate adds one
-    ax.add_artist(note)
-    note.set_clip_path(None)  # add_artist clips to the axes; annotate does not
+    # Added as Axes.annotate adds one (add_artist would clip it to the axes).
+    note.set_transform(IdentityTransform())
+    if kwargs.get("clip_on", False) and note.get_clip_path() is None:
+        note.set_clip_path(ax.patch)
+    ax._add_text(note)
     return note
 
 
