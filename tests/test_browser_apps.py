@@ -361,7 +361,21 @@ def test_frames_are_not_encoded_again_until_they_stop(lesson, request):
     assert not in_frames, f"{len(in_frames)} pictures encoded by the frame handler itself"
     # (Other figures on the page may encode theirs meanwhile.)
     after = [e["url"] for e in encoded if e["t"] > frames[-1]]
-    assert on_show in after, "the picture on show was not encoded once the frames stopped"
+    timeline = page.evaluate(
+        """([c, a]) => ({
+            pictures: window.__probe.of(c).filter((f) => f.t > a).map((f) => Math.round(f.t)),
+            encoded: window.__probe.dataUrls.filter((e) => e.t > a)
+                .map((e) => [Math.round(e.t), e.inFrame, e.url.length]),
+            decodes: window.__probe.decodes.filter((d) => d.t > a)
+                .map((d) => [Math.round(d.t), d.by]),
+            now: Math.round(performance.now()),
+        })""",
+        [canvas, start],
+    )
+    assert on_show in after, (
+        "the picture on show was not encoded once the frames stopped; "
+        f"on show was encoded before: {on_show in [e['url'] for e in encoded]}; {timeline}"
+    )
 
 
 #: Run before the page's own scripts: a page without WebCodecs (an insecure context, a browser

@@ -141,6 +141,10 @@ FRAME_JS = """
     } finally {
       delete canvas.toDataURL;
       saveLater(this);
+      // ipympl draws the <img> when it has loaded (its onload, which runs first): the picture
+      // to save is that one, so wait 300 ms from then (a load slower than 300 ms left the
+      // picture before it saved).
+      if (this.image) this.image.addEventListener('load', () => saveLater(this), {once: true});
     }
   };
   const decode = (bytes) => {  // a picture drawImage takes, and close() frees
