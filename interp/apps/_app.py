@@ -270,11 +270,11 @@ def control(param: Param) -> widgets.ValueWidget:
     """The widget for one parameter: a drop-down for choices, else a slider; its value not
     echoed (:func:`no_echo`)."""
     if param.options is not None:
-        return no_echo(choice(str(param.default), param.options, param.label))
-    if param.kind is int:
-        return no_echo(int_slider(int(param.default), int(param.low), int(param.high), param.label))
-    return no_echo(
-        slider(
+        widget = choice(str(param.default), param.options, param.label)
+    elif param.kind is int:
+        widget = int_slider(int(param.default), int(param.low), int(param.high), param.label)
+    else:
+        widget = slider(
             float(param.default),
             float(param.low),
             float(param.high),
@@ -283,7 +283,7 @@ def control(param: Param) -> widgets.ValueWidget:
             log=param.log,
             readout_format=param.fmt,
         )
-    )
+    return no_echo(widget)
 
 
 def no_echo(widget: widgets.ValueWidget) -> widgets.ValueWidget:
