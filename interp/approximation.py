@@ -8,6 +8,7 @@ Two remedies for affine texture mapping, measured on the same ground plane:
   affinely: one divide per vertex, no divides per pixel.
 
 Error is the mean distance, in texels, between the approximate and the exact ``(u, v)``.
+Both are measured on the pixels the plane covers, drawn as one quad.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from interp import _checks
+from interp.barycentric import _screen_weights, lerp
 from interp.camera import Camera
 from interp.raster import Fragments, fragment_values, fragment_values_per_span, fragments
 from interp.scenes import LESSON_SIZE, Scene, ground_plane
@@ -120,7 +122,8 @@ def tessellation_costs(
     """PlayStation-style tessellation: error and divides per pixel for each grid.
 
     Affine interpolation needs no divide per pixel, only the perspective divide of each visible
-    vertex, so divides per pixel is (vertices drawn) / (pixels drawn).
+    vertex, so divides per pixel is (vertices drawn) / (pixels drawn). What each pixel shows
+    is :func:`affine_on_quads`: the plane need not be drawn again for every grid.
 
     Examples
     --------
@@ -129,12 +132,72 @@ def tessellation_costs(
     True
     """
     camera = camera.fitted(width, height)
+    plane, frags, exact = _drawn(camera, width, height, 1)
     divides, errors = [], []
     for n in quads:
-        scene, frags, exact = _drawn(camera, width, height, _checks.positive_int(n, "quads", 256))
-        affine = fragment_values(frags, "affine")
+        scene = ground_plane(camera, LESSON_SIZE, _checks.positive_int(n, "quads", 256))
+        affine, triangle = affine_on_quads(exact, plane.clip[:3, 3], n)
         errors.append(_mean_texel_error(affine, exact, frequency))
-        drawn = _distinct(frags.triangle, len(scene.triangles))
+        drawn = _distinct(triangle, len(scene.triangles))
         visible = _distinct(scene.triangles[drawn].ravel(), len(scene.clip))
         divides.append(len(visible) / max(len(frags.pixel), 1))
     return Costs(np.array(quads), np.array(divides), np.array(errors))
+
+
+def affine_on_quads(exact: np.ndarray, w: np.ndarray, quads: int) -> tuple[np.ndarray, np.ndarray]:
+    """What the ground plane cut into ``quads`` x ``quads`` quads, drawn affinely, shows at
+    pixels whose exact ``(u, v)`` is ``exact``: ``(affine, triangle)``, the affine ``(u, v)``
+    and which of :func:`~interp.scenes.ground_plane`'s triangles covers each pixel.
+
+    No quad is drawn. A pixel's exact ``(u, v)`` is the point of the plane it shows, so it
+    names the small triangle the pixel falls in (a projection keeps which side of a line a
+    point is on), and that point's weights λ for the triangle's corners: the plane is linear
+    in ``(u, v)``, so λ are the barycentrics of ``(u, v)`` among the corners' ``(u, v)``, the
+    perspective-correct weights. Affine interpolation weights the corners by the screen-space
+    barycentrics b instead, ``b_i = λ_i w_i / Σ_j λ_j w_j``. The smaller the triangle, the
+    less w varies across it, and the nearer b is to λ. The rasterizer drawing the quads gives
+    the same values (to its snapping of corners to 1/256 of a pixel, which can give a pixel
+    on an edge to the triangle beside it).
+
+    Parameters
+    ----------
+    exact : (2, P) array
+        The exact ``(u, v)`` of P pixels of the plane (in [0, 1], to rounding).
+    w : (3,) array
+        The plane's clip-space w at ``(u, v)`` = (0, 0), (1, 0) and (0, 1); it is linear in
+        ``(u, v)``.
+    quads : int
+        Quads per side.
+
+    Returns
+    -------
+    affine : (2, P) array
+    triangle : (P,) int array
+
+    Examples
+    --------
+    Where w grows along u (the plane's far side is at u = 1), affine interpolation runs ahead
+    of the exact u, the less so the smaller the triangles:
+
+    >>> exact = np.array([[0.3], [0.5]])
+    >>> w = np.array([1.0, 3.0, 1.0])
+    >>> [float(affine_on_quads(exact, w, n)[0][0, 0]) for n in (1, 4)]
+    [0.5625, 0.3125]
+    """
+    u, v = exact * quads  # in quads: quad (j, i) holds [j, j + 1) x [i, i + 1)
+    j = np.clip(np.floor(u), 0, quads - 1)
+    i = np.clip(np.floor(v), 0, quads - 1)
+    f, g = u - j, v - i  # where in its quad, each in [0, 1]
+    # ground_plane cuts quad (j, i) along its diagonal a-d into triangles (a, b, d) below it
+    # (f >= g) and (a, d, c) above, with corners a (0, 0), b (1, 0), c (0, 1), d (1, 1).
+    above = g > f
+    corner_u = j + np.array([0.0, 1.0, 1.0])[:, None] - above * np.array([0, 0, 1])[:, None]
+    corner_v = i + np.array([0.0, 0.0, 1.0])[:, None] + above * np.array([0, 1, 0])[:, None]
+    # In (a, b, d): f = λ_b + λ_d and g = λ_d; in (a, d, c): f = λ_d and g = λ_d + λ_c.
+    weights = np.where(above, [1 - g, f, g - f], [1 - f, f - g, g])
+    w00, w10, w01 = w
+    w_corners = w00 + (w10 - w00) * corner_u / quads + (w01 - w00) * corner_v / quads
+    b = _screen_weights(weights, w_corners)
+    affine = np.stack([lerp(b, corner_u), lerp(b, corner_v)]) / quads
+    triangle = 2 * (i * quads + j).astype(np.int64) + above
+    return affine, triangle

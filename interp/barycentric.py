@@ -86,6 +86,21 @@ def _perspective_weights(b: np.ndarray, w: np.ndarray) -> np.ndarray:
     return q / q.sum(axis=0)
 
 
+def _screen_weights(weights: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """The other way: ``b_i = λ_i w_i / Σ_j λ_j w_j`` along the first axis, the screen-space
+    barycentrics of the point whose perspective-correct weights are ``λ``. The sum is the
+    point's own w, as w is linear in space; a vertex may have any w (even behind the eye),
+    as long as the point is in front.
+
+    Examples
+    --------
+    >>> _screen_weights(np.array([0.75, 0.25, 0.0]), np.array([1.0, 3.0, 2.0]))
+    array([0.5, 0.5, 0. ])
+    """
+    q = weights * w
+    return q / q.sum(axis=0)
+
+
 def perspective_weights(b: object, w: object) -> np.ndarray:
     """OpenGL's perspective-correct barycentric weights (OpenGL 4.6, eq. 14.9).
 
