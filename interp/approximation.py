@@ -123,7 +123,8 @@ def tessellation_costs(
 
     Affine interpolation needs no divide per pixel, only the perspective divide of each visible
     vertex, so divides per pixel is (vertices drawn) / (pixels drawn). What each pixel shows
-    is :func:`affine_on_quads`: the plane need not be drawn again for every grid.
+    is worked out from the one drawing of the plane (``_affine_on_quads``), not drawn again
+    for every grid.
 
     Examples
     --------
@@ -136,7 +137,7 @@ def tessellation_costs(
     divides, errors = [], []
     for n in quads:
         scene = ground_plane(camera, LESSON_SIZE, _checks.positive_int(n, "quads", 256))
-        affine, triangle = affine_on_quads(exact, plane.clip[:3, 3], n)
+        affine, triangle = _affine_on_quads(exact, plane.clip[:3, 3], n)
         errors.append(_mean_texel_error(affine, exact, frequency))
         drawn = _distinct(triangle, len(scene.triangles))
         visible = _distinct(scene.triangles[drawn].ravel(), len(scene.clip))
@@ -144,7 +145,7 @@ def tessellation_costs(
     return Costs(np.array(quads), np.array(divides), np.array(errors))
 
 
-def affine_on_quads(exact: np.ndarray, w: np.ndarray, quads: int) -> tuple[np.ndarray, np.ndarray]:
+def _affine_on_quads(exact: np.ndarray, w: np.ndarray, quads: int) -> tuple[np.ndarray, np.ndarray]:
     """What the ground plane cut into ``quads`` x ``quads`` quads, drawn affinely, shows at
     pixels whose exact ``(u, v)`` is ``exact``: ``(affine, triangle)``, the affine ``(u, v)``
     and which of :func:`~interp.scenes.ground_plane`'s triangles covers each pixel.
@@ -181,7 +182,7 @@ def affine_on_quads(exact: np.ndarray, w: np.ndarray, quads: int) -> tuple[np.nd
 
     >>> exact = np.array([[0.3], [0.5]])
     >>> w = np.array([1.0, 3.0, 1.0])
-    >>> [float(affine_on_quads(exact, w, n)[0][0, 0]) for n in (1, 4)]
+    >>> [float(_affine_on_quads(exact, w, n)[0][0, 0]) for n in (1, 4)]
     [0.5625, 0.3125]
     """
     u, v = exact * quads  # in quads: quad (j, i) holds [j, j + 1) x [i, i + 1)

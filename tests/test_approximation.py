@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from interp import approximation
-from interp.approximation import affine_on_quads, tessellation_costs
+from interp.approximation import _affine_on_quads, tessellation_costs
 from interp.plots.gpu import LAB_CAMERA
 from interp.raster import fragment_values, fragments
 from interp.scenes import LESSON_SIZE, ground_plane
@@ -46,7 +46,7 @@ def test_affine_on_quads_is_what_the_rasterizer_draws(name, quads):
     camera = CAMERAS[name].fitted(WIDTH, HEIGHT)
     plane, whole, _, exact = drawn(camera, 1)
     _, frags, affine, _ = drawn(camera, quads)
-    mine, triangle = affine_on_quads(exact, plane.clip[:3, 3], quads)
+    mine, triangle = _affine_on_quads(exact, plane.clip[:3, 3], quads)
     # The same pixels, but for a few on the plane's outline (its corners, snapped, differ).
     shared, here, there = np.intersect1d(whole.pixel, frags.pixel, return_indices=True)
     assert len(whole.pixel) - len(shared) <= 2 and len(frags.pixel) - len(shared) <= 2
