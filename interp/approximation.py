@@ -133,11 +133,11 @@ def tessellation_costs(
     True
     """
     camera = camera.fitted(width, height)
-    _, frags, exact = _drawn(camera, width, height, 1)
+    plane, frags, exact = _drawn(camera, width, height, 1)
     divides, errors = [], []
     for n in quads:
         scene = ground_plane(camera, LESSON_SIZE, _checks.positive_int(n, "quads", 256))
-        affine, triangle = _affine_on_quads(exact, scene, n)
+        affine, triangle = _affine_on_quads(exact, plane.clip[:3, 3], n)
         errors.append(_mean_texel_error(affine, exact, frequency))
         drawn = _distinct(triangle, len(scene.triangles))
         visible = _distinct(scene.triangles[drawn].ravel(), len(scene.clip))
@@ -145,10 +145,10 @@ def tessellation_costs(
     return Costs(np.array(quads), np.array(divides), np.array(errors))
 
 
-def _affine_on_quads(exact: np.ndarray, scene: Scene, quads: int) -> tuple[np.ndarray, np.ndarray]:
-    """What ``scene``, the ground plane cut into ``quads`` x ``quads`` quads, drawn affinely,
-    shows at pixels whose exact ``(u, v)`` is ``exact``: ``(affine, triangle)``, the affine
-    ``(u, v)`` and which of the scene's triangles covers each pixel.
+def _affine_on_quads(exact: np.ndarray, w: np.ndarray, quads: int) -> tuple[np.ndarray, np.ndarray]:
+    """What the ground plane cut into ``quads`` x ``quads`` quads, drawn affinely, shows at
+    pixels whose exact ``(u, v)`` is ``exact``: ``(affine, triangle)``, the affine ``(u, v)``
+    and which of :func:`~interp.scenes.ground_plane`'s triangles covers each pixel.
 
     No quad is drawn. A pixel's exact ``(u, v)`` is the point of the plane it shows, so it
     names the small triangle the pixel falls in (a projection keeps which side of a line a
@@ -164,8 +164,9 @@ def _affine_on_quads(exact: np.ndarray, scene: Scene, quads: int) -> tuple[np.nd
     ----------
     exact : (2, P) array
         The exact ``(u, v)`` of P pixels of the plane (in [0, 1], to rounding).
-    scene : Scene
-        :func:`~interp.scenes.ground_plane` with ``quads`` quads a side.
+    w : (3,) array
+        The plane's clip-space w at ``(u, v)`` = (0, 0), (1, 0) and (0, 1); it is linear in
+        ``(u, v)``.
     quads : int
         Quads per side.
 
@@ -176,15 +177,13 @@ def _affine_on_quads(exact: np.ndarray, scene: Scene, quads: int) -> tuple[np.nd
 
     Examples
     --------
-    Affine interpolation misses the exact ``(u, v)``, the less so the smaller the triangles:
+    Where w grows along u (the plane's far side is at u = 1), affine interpolation runs ahead
+    of the exact u, the less so the smaller the triangles:
 
-    >>> camera = Camera(height=1, pitch=25)
-    >>> exact = np.array([[0.3], [0.45]])
-    >>> for n in (1, 4):
-    ...     affine, _ = _affine_on_quads(exact, ground_plane(camera, LESSON_SIZE, n), n)
-    ...     print(n, np.round(affine[:, 0] - exact[:, 0], 4))
-    1 [0.2021 0.3031]
-    4 [0.0031 0.0122]
+    >>> exact = np.array([[0.3], [0.5]])
+    >>> w = np.array([1.0, 3.0, 1.0])
+    >>> [float(_affine_on_quads(exact, w, n)[0][0, 0]) for n in (1, 4)]
+    [0.5625, 0.3125]
     """
     u, v = exact * quads  # in quads: quad (j, i) holds [j, j + 1) x [i, i + 1)
     j = np.clip(np.floor(u), 0, quads - 1)
@@ -193,9 +192,13 @@ def _affine_on_quads(exact: np.ndarray, scene: Scene, quads: int) -> tuple[np.nd
     # ground_plane cuts quad (j, i) along its diagonal a-d into triangles (a, b, d) below it
     # (f >= g) and (a, d, c) above, with corners a (0, 0), b (1, 0), c (0, 1), d (1, 1).
     above = g > f
-    triangle = 2 * (i * quads + j).astype(np.int64) + above
-    corners = scene.triangles[triangle].T  # (3, P)
+    corner_u = j + np.array([0.0, 1.0, 1.0])[:, None] - above * np.array([0, 0, 1])[:, None]
+    corner_v = i + np.array([0.0, 0.0, 1.0])[:, None] + above * np.array([0, 1, 0])[:, None]
     # In (a, b, d): f = λ_b + λ_d and g = λ_d; in (a, d, c): f = λ_d and g = λ_d + λ_c.
     weights = np.where(above, [1 - g, f, g - f], [1 - f, f - g, g])
-    b = _screen_weights(weights, scene.clip[corners, 3])
-    return lerp(b, np.moveaxis(scene.uv[corners], 2, 1)), triangle
+    w00, w10, w01 = w
+    w_corners = w00 + (w10 - w00) * corner_u / quads + (w01 - w00) * corner_v / quads
+    b = _screen_weights(weights, w_corners)
+    affine = np.stack([lerp(b, corner_u), lerp(b, corner_v)]) / quads
+    triangle = 2 * (i * quads + j).astype(np.int64) + above
+    return affine, triangle
