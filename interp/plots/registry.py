@@ -406,10 +406,15 @@ def _image_difference(images: list[ColourTriangle]) -> tuple[float, int] | None:
     """The largest colour difference between two drawings of the same quad, and the image row
     where it is; None if nothing is drawn."""
     first, second = (np.asarray(image.image.get_array()) for image in images)
-    drawn = np.any(first != 1.0, axis=2) | np.any(second != 1.0, axis=2)
+    # Channel by channel: numpy reduces an axis of three slowly (2 ms for these images).
+    drawn = np.zeros(first.shape[:2], dtype=bool)
+    difference = np.zeros(first.shape[:2])
+    for channel in range(first.shape[2]):
+        drawn |= (first[..., channel] != 1.0) | (second[..., channel] != 1.0)
+        np.maximum(difference, np.abs(first[..., channel] - second[..., channel]), out=difference)
     if not drawn.any():
         return None
-    difference = np.where(drawn, np.abs(first - second).max(axis=2), -1.0)
+    difference[~drawn] = -1.0
     row = int(np.unravel_index(np.argmax(difference), difference.shape)[0])
     return float(difference.max()), row
 
