@@ -4,6 +4,7 @@ drawn once, with the newest values."""
 from __future__ import annotations
 
 import asyncio
+import itertools
 import platform
 import sys
 import threading
@@ -689,6 +690,118 @@ def test_kept_glyphs_measure_text_as_matplotlib_does(hinting):
             # Unhinted, set_text's sub-pixel pen differs from the layout's: matplotlib measures.
             assert bool(kept.boxes) == (hinting != "no_hinting")
     assert measured == 180
+
+
+@pytest.mark.parametrize("hinting", ["default", "force_autohint", "no_hinting"])
+def test_digits_swapped_lay_text_out_as_matplotlib_does(hinting):
+    """A string that differs from one laid out before only in its digits (a title quoting a
+    slider's value) is laid out by swapping the digits' glyphs (``_glyphs``): every glyph,
+    font and place equal matplotlib's own layout of it, for titles like the apps', four
+    families, regular and bold italic, three sizes and two resolutions. In the apps' font
+    (DejaVu Sans) the swap is what gave them (matplotlib was asked only for the first string of
+    each shape and the checks), except in a string with a ligature (ffi), whose glyphs are not
+    one a character; STIX bold italic kerns a comma before some digits, and there a string is
+    laid out by matplotlib again."""
+    from matplotlib.backends.backend_agg import RendererAgg, get_hinting_flag
+    from matplotlib.font_manager import FontProperties
+
+    from interp.apps import _glyphs
+
+    if not keep_glyphs(RendererAgg(10, 10, 100)):
+        pytest.skip(f"matplotlib {matplotlib.__version__} is not 3.11: no glyphs are kept")
+    titles = [
+        "M, the middle of AB, shows at s = 0.523",
+        "|Δ(u, v)| in texels (max 1.25)",
+        "d = \u22123.5, w = (2.0, 10.00)",
+        "level 3: 64²",
+        "7",
+        "x1y2z3 ffi 12",
+        "40°, 1/2, 12:30 [9]",
+    ]
+    rng = np.random.default_rng(len(hinting))
+    asked = []
+    real = _glyphs._layout
+    swapped = {}
+    with matplotlib.rc_context({"text.hinting": hinting}), warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # cmr10 has no bold
+        for dpi, family, size, look in itertools.product(
+            (100, 200),
+            ("DejaVu Sans", "DejaVu Serif", "STIXGeneral", "cmr10"),
+            (8.33, 10.0, 14.4),
+            (("normal", "normal"), ("bold", "italic")),
+        ):
+            kept = RendererAgg(10, 10, dpi)
+            keep_glyphs(kept)
+            prop = FontProperties(family=family, size=size, weight=look[0], style=look[1])
+            font = kept._prepare_font(prop)
+            for title in titles:
+                kept._laid_out(font, title, size, None, None)
+                texts = {title}
+                while len(texts) < 7:  # six new strings, each laid out once
+                    texts.add(
+                        "".join(str(rng.integers(10)) if c in "0123456789" else c for c in title)
+                    )
+                for text in sorted(texts - {title}):
+                    asked.clear()
+                    _glyphs._layout = lambda *args: asked.append(args[1]) or real(*args)
+                    try:
+                        laid_out = kept._laid_out(font, text, size, None, None)
+                    finally:
+                        _glyphs._layout = real
+                    want = real(font, text, get_hinting_flag(), None, None)
+                    assert laid_out == [(i.ft_object, i.glyph_index, i.x, i.y) for i in want]
+                    swapped[(family, look, dpi, size, text)] = text not in asked
+    assert len(swapped) == 2 * 4 * 3 * 2 * len(titles) * 6
+    for (family, _, *_, text), swap in swapped.items():
+        if family == "DejaVu Sans":
+            assert swap == ("ffi" not in text), (family, text)
+    assert not all(
+        swap
+        for (family, look, *_, text), swap in swapped.items()
+        if family == "STIXGeneral" and look[0] == "bold" and "," in text
+    )
+    assert sum(swapped.values()) > 0.8 * len(swapped)
+
+
+def test_digits_are_not_swapped_where_the_font_kerns_them(monkeypatch):
+    """Where a digit beside some character would move the next glyph (a font that kerns "T7"
+    and "7)", here made up over DejaVu Sans), a string differing in that digit is laid out by
+    matplotlib again, with the kerning; beside other characters digits are still swapped."""
+    from matplotlib.backends.backend_agg import RendererAgg
+    from matplotlib.font_manager import FontProperties
+
+    from interp.apps import _glyphs
+
+    if not keep_glyphs(RendererAgg(10, 10, 100)):
+        pytest.skip(f"matplotlib {matplotlib.__version__} is not 3.11: no glyphs are kept")
+    real = _glyphs._layout
+    asked = []
+
+    class Moved:  # a layout item, moved by dx
+        def __init__(self, item, dx):
+            self.char, self.ft_object = item.char, item.ft_object
+            self.glyph_index, self.x, self.y = item.glyph_index, item.x + dx, item.y
+
+    def kerning(font, s, *rest):  # "T7" and "7)" kerned by a pixel each
+        asked.append(s)
+        items, shift = [], 0.0
+        for k, item in enumerate(real(font, s, *rest)):
+            shift -= 1.0 if s[k - 1 : k + 1] in ("T7", "7)") else 0.0
+            items.append(Moved(item, shift))
+        return items
+
+    monkeypatch.setattr(_glyphs, "_layout", kerning)
+    flags = _glyphs.get_hinting_flag()
+    for text, kerned in (("T5 x7 (5)", False), ("T7 x5 (5)", True), ("T5 x5 (7)", True)):
+        kept = RendererAgg(10, 10, 100)
+        keep_glyphs(kept)
+        font = kept._prepare_font(FontProperties(family="DejaVu Sans", size=10))
+        first = kept._laid_out(font, "T5 x5 (5)", 10.0, None, None)
+        laid_out = kept._laid_out(font, text, 10.0, None, None)
+        assert (text in asked) == kerned, text  # laid out again only beside T or )
+        want = kerning(font, text, flags, None, None)
+        assert laid_out == [(i.ft_object, i.glyph_index, i.x, i.y) for i in want]
+        assert (laid_out[-1][2] == first[-1][2] - 1.0) == kerned  # the last glyph moved
 
 
 def test_kept_font_heights_lay_text_out_as_matplotlib_does():

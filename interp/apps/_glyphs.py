@@ -13,6 +13,15 @@ every app's frames with figures drawn by matplotlib alone). One difference: text
 300,000 pixels off the canvas, which FreeType refuses to render, is rendered here (at its
 place within a pixel) and then falls outside the canvas.
 
+A title that quotes a slider's value is a new string on every step, and laying it out takes
+1-3 ms (35 us a character). Where the new string differs from one laid out before only in its
+digits, its layout is that one's with the digits' glyphs swapped, once the font's digits are
+found interchangeable there: every pair of digits, and every digit beside each character next
+to a changed one, lays out with the same advance (:meth:`GlyphKeepingRenderer._swaps_digits`;
+one layout of a short string each, kept). The places are then the same, as ``tests/test_live.py``
+checks against matplotlib's own layout for four families, and where a font kerns a digit (STIX
+bold italic after a comma) the string is laid out anew.
+
 Text is measured (to align it) before it is drawn, and matplotlib measures a string with
 ``FT2Font.set_text``, which lays it out once more and loads every glyph: for a title that
 quotes a slider's value, a new string on every step, 1 ms. The renderer measures from the kept
@@ -32,7 +41,9 @@ it is.
 
 from __future__ import annotations
 
+import itertools
 import math
+import re
 
 import matplotlib
 import numpy as np
@@ -43,10 +54,21 @@ from matplotlib.ft2font import LoadFlags, RenderMode
 
 #: Kept layouts and glyph pictures per renderer, at most; then they are dropped and kept anew.
 LIMIT = 20_000
+#: Any decimal digit, as :meth:`GlyphKeepingRenderer._laid_out` swaps them.
+DIGIT = re.compile(r"[0-9]")
+#: Every ordered pair of decimal digits once, each beside the next (a de Bruijn sequence).
+DIGIT_PAIRS = "00102030405060708091121314151617181922324252627282933435363738394454647484955657"
+DIGIT_PAIRS += "585966768697787988990"
 #: The matplotlib whose text drawing :class:`GlyphKeepingRenderer` repeats.
 MATPLOTLIB = (3, 11)
 #: Whether the matplotlib installed is that one (``_samples`` repeats the same version's code).
 APPLIES = tuple(int(part) for part in matplotlib.__version__.split(".")[:2]) == MATPLOTLIB
+
+
+def _layout(font: object, s: str, flags: object, features: object, language: object) -> list:
+    """matplotlib's layout of ``s`` (``FT2Font._layout``): its glyphs, one a character or a
+    ligature, each with the character(s) it shows, its font and its place."""
+    return font._layout(s, flags=flags, features=features, language=language)
 
 
 def keep_glyphs(renderer: RendererAgg, figure: Figure | None = None) -> bool:
@@ -76,6 +98,8 @@ def keep_glyphs(renderer: RendererAgg, figure: Figure | None = None) -> bool:
     renderer.glyphs = {}
     renderer.boxes = {}
     renderer.heights = {}
+    renderer.shapes = {}
+    renderer.swaps = {}
     renderer.root_figure = figure
     return True
 
@@ -97,6 +121,12 @@ class GlyphKeepingRenderer(RendererAgg):
     heights : dict
         (font properties, the font families' rcParams, the fonts known, dpi) -> a line's
         least ascent and descent and the line gap, in pixels.
+    shapes : dict
+        A layout's key with every digit of its string made 0 -> a string laid out with that
+        key, one glyph a character, whose digits are the font's own glyphs.
+    swaps : dict
+        (font, size, dpi, hinting, a character or "digits") -> whether a digit beside that
+        character (or beside another digit) may be swapped for another, keeping every place.
     root_figure : Figure or None
         The figure drawn, whose dpi line heights scale with; None: matplotlib works them out.
     """
@@ -105,6 +135,8 @@ class GlyphKeepingRenderer(RendererAgg):
     glyphs: dict
     boxes: dict
     heights: dict
+    shapes: dict
+    swaps: dict
 
     def _get_font_height_metrics(self, prop: object) -> tuple:
         """``(ascent, descent, line gap)`` of the font ``prop`` finds, in pixels, as
@@ -199,17 +231,82 @@ class GlyphKeepingRenderer(RendererAgg):
     def _laid_out(
         self, font: object, s: str, size: float, features: object, language: object
     ) -> list[tuple]:
-        """The glyphs of ``s`` and their offsets (``FT2Font._layout``), kept per string."""
+        """The glyphs of ``s`` and their offsets (``FT2Font._layout``), kept per string; for a
+        string differing from one laid out before only in digits, that layout with the digits
+        swapped where the font allows it (:meth:`_digits_swapped`)."""
         key = (font, s, size, self.dpi, get_hinting_flag(), repr(features), repr(language))
         items = self.layouts.get(key)
         if items is None:
             if len(self.layouts) >= LIMIT:
                 self.layouts.clear()
-            laid_out = font._layout(
-                s, flags=get_hinting_flag(), features=features, language=language
-            )
-            items = self.layouts[key] = [(i.ft_object, i.glyph_index, i.x, i.y) for i in laid_out]
+                self.shapes.clear()
+            shape = (font, DIGIT.sub("0", s), *key[2:])
+            items = self._digits_swapped(font, s, shape, key)
+            if items is None:
+                laid_out = _layout(font, s, get_hinting_flag(), features, language)
+                items = [(i.ft_object, i.glyph_index, i.x, i.y) for i in laid_out]
+                if (
+                    shape[1] != s
+                    and len(laid_out) == len(s)
+                    and all(i.char == c for i, c in zip(laid_out, s, strict=True))
+                    and all(
+                        i.ft_object is font and i.glyph_index == font.get_char_index(ord(c))
+                        for i, c in zip(laid_out, s, strict=True)
+                        if DIGIT.fullmatch(c)
+                    )
+                ):
+                    self.shapes[shape] = s
+            self.layouts[key] = items
         return items
+
+    def _digits_swapped(self, font: object, s: str, shape: tuple, key: tuple) -> list | None:
+        """The layout of ``s`` from that of a string laid out before (:attr:`shapes`) that
+        differs from it only in digits, each of which may be swapped (:meth:`_swaps_digits`);
+        None if there is none. Only for strings laid out without features or a language."""
+        before = self.shapes.get(shape)
+        if before is None or key[5] != "None" or key[6] != "None":
+            return None
+        items = list(self.layouts.get((font, before, *key[2:]), ()))
+        if len(items) != len(s):
+            return None
+        for k, (new, old) in enumerate(zip(s, before, strict=True)):
+            if new == old:
+                continue
+            for beside in s[k - 1 : k] + s[k + 1 : k + 2]:
+                if not self._swaps_digits(font, key, "digits" if DIGIT.match(beside) else beside):
+                    return None
+            ft_object, _, x, y = items[k]
+            items[k] = (ft_object, font.get_char_index(ord(new)), x, y)
+        return items
+
+    def _swaps_digits(self, font: object, key: tuple, beside: str) -> bool:
+        """Whether the font (at ``key``'s size, dpi and hinting) lays any digit out as any
+        other beside ``beside``: after it, and before it, the next glyph is as far on, and each
+        digit is its own glyph. ``beside="digits"``: beside any digit, the same. Laid out once
+        (``FT2Font._layout``) and kept."""
+        check = (font, *key[2:5], beside)
+        found = self.swaps.get(check)
+        if found is None:
+            if beside == "digits":
+                text = DIGIT_PAIRS  # digit after digit, each pair once
+            else:
+                text = beside + beside.join("0123456789") + beside
+            laid_out = _layout(font, text, key[4], None, None)
+            found = len(laid_out) == len(text) and all(
+                i.char == c
+                and (
+                    not DIGIT.fullmatch(c)
+                    or (i.ft_object is font and i.glyph_index == font.get_char_index(ord(c)))
+                )
+                for i, c in zip(laid_out, text, strict=True)
+            )
+            if found:
+                steps = [b.x - a.x for a, b in itertools.pairwise(laid_out)]
+                found = len(set(steps[0::2])) == 1 and len(set(steps[1::2])) == 1
+                if beside == "digits":
+                    found = len(set(steps)) == 1
+            self.swaps[check] = found
+        return found
 
     def _draw_text_glyphs_and_boxes(
         self,
