@@ -406,7 +406,7 @@ def _image_difference(images: list[ColourTriangle]) -> tuple[float, int] | None:
     """The largest colour difference between two drawings of the same quad, and the image row
     where it is; None if nothing is drawn."""
     first, second = (np.asarray(image.image.get_array()) for image in images)
-    # Channel by channel: numpy reduces an axis of three slowly (2 ms for these images).
+    # Channel by channel: numpy reduces an axis of three slowly (4.5 ms against 1.0 ms here).
     drawn = np.zeros(first.shape[:2], dtype=bool)
     difference = np.zeros(first.shape[:2])
     for channel in range(first.shape[2]):
