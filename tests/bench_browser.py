@@ -38,6 +38,11 @@ per display frame; Playwright's round trips are not in the figures.
 The machine is shared and noisy: the output starts with the CPU count and load average, before
 and after, so runs can be compared.
 
+``--cpu`` (Linux) adds, under each app's row, where the CPU went during its key steps: the
+CPU time each process and thread used (the kernel, the Jupyter server, Chromium's renderer
+main thread, compositor, decoders, ...), read from ``/proc`` before and after, in ms a step,
+the waits between steps included. On two CPUs, the browser's share competes with the kernel's.
+
 ``--tree DIR`` measures another checkout instead of this one: its lessons, and its ``interp`` in
 the kernels (first on their PYTHONPATH) and here (for the apps' parameters). So the same script
 measures the apps before and after a change, e.g. in a worktree at an older commit
@@ -57,6 +62,7 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import textwrap
 import time
 from pathlib import Path
 
@@ -349,6 +355,57 @@ def readout_agrees(readout: tuple, values: dict[str, str]) -> bool:
 # ---------------------------------------------------------------------------------- per app
 
 
+def _cpu_kind(command: str) -> str | None:
+    """Which part of the benchmark a process is, from its command line; None: not one."""
+    if "ipykernel" in command:
+        return "kernel"
+    if "chromium" in command:
+        for kind in ("renderer", "gpu-process", "utility"):
+            if f"--type={kind}" in command:
+                return f"chromium {kind}"
+        return "chromium browser"
+    if "jupyter" in command:
+        return "server"
+    return None
+
+
+def cpu_times() -> dict[tuple[str, str, str], tuple[str, float]]:
+    """CPU time (s) of every thread of the kernels, the server and Chromium, from ``/proc``:
+    (kind, pid, tid) -> (thread name, user + system time); empty where there is no ``/proc``."""
+    tick = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+    found = {}
+    for pid in os.listdir("/proc") if os.path.isdir("/proc") else ():
+        if not pid.isdigit():
+            continue
+        try:
+            kind = _cpu_kind(Path(f"/proc/{pid}/cmdline").read_text().replace("\0", " "))
+            tids = os.listdir(f"/proc/{pid}/task") if kind else ()
+        except OSError:
+            continue
+        for tid in tids:
+            try:
+                stat = Path(f"/proc/{pid}/task/{tid}/stat").read_text()
+            except OSError:
+                continue
+            name = stat[stat.find("(") + 1 : stat.rfind(")")]
+            fields = stat[stat.rfind(")") + 2 :].split()
+            found[(kind, pid, tid)] = (name, (int(fields[11]) + int(fields[12])) / tick)
+    return found
+
+
+def cpu_per_step(before: dict, after: dict, steps: int) -> dict[str, float]:
+    """CPU ms a step per process kind and thread name, between two :func:`cpu_times`, largest
+    first (under 0.5 ms left out)."""
+    used: dict[str, float] = {}
+    for key, (name, seconds) in after.items():
+        spent = seconds - before.get(key, (name, 0.0))[1]
+        if spent > 0:
+            kind, pid, tid = key
+            label = f"{kind} {'main' if tid == pid else name}"
+            used[label] = used.get(label, 0.0) + 1000 * spent / max(steps, 1)
+    return {k: round(v, 1) for k, v in sorted(used.items(), key=lambda kv: -kv[1]) if v >= 0.5}
+
+
 def bench_slider(page, name: str, count: int, args, label: str) -> dict:
     root = app_root(page, name)
     param_name = STEP_PARAM[name]
@@ -360,7 +417,9 @@ def bench_slider(page, name: str, count: int, args, label: str) -> dict:
     handle = slider.locator(".noUi-handle")
     up = param.default + args.steps * param.step <= param.high
     key = "ArrowRight" if up else "ArrowLeft"
+    before = cpu_times() if args.cpu else {}
     latencies, misses = step_with_keys(page, handle, canvas, key, args.steps)
+    cpu = cpu_per_step(before, cpu_times(), args.steps) if args.cpu else None
     box = steady_box(handle)
     track = slider.locator(".noUi-target").bounding_box()
     centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
@@ -371,6 +430,8 @@ def bench_slider(page, name: str, count: int, args, label: str) -> dict:
     readout = (slider.locator(".widget-readout"), param, param_name)
     row = measure_drag(page, canvas, centre, amplitude, args, count, readout, name + label)
     row.update(input=f"{label} slider '{param.label}'", **summary(latencies, misses))
+    if cpu is not None:
+        row["cpu_ms_per_step"] = cpu
     return row
 
 
@@ -458,6 +519,8 @@ def bench_lesson(context, base, notebook, names, args, label="", only=None) -> l
                 )
                 rows.append(row)
                 print(format_row(row), flush=True)
+                if row.get("cpu_ms_per_step"):
+                    print(format_cpu(row["cpu_ms_per_step"]), flush=True)
         for row in rows:
             row["console_errors"] = list(page.errors)
     finally:
@@ -561,6 +624,14 @@ def format_row(row: dict) -> str:
     )
 
 
+def format_cpu(used: dict[str, float]) -> str:
+    """The lines under an app's row that say where the CPU went in its key steps."""
+    text = f"CPU ms a key step, {sum(used.values()):.0f} in all: " + ", ".join(
+        f"{label} {ms:.1f}" for label, ms in used.items()
+    )
+    return textwrap.fill(text, 100, initial_indent="    ", subsequent_indent="      ")
+
+
 # ------------------------------------------------------------------------ fits the screen
 
 #: Where each app is measured: (label, viewport, JupyterLab with the file browser or Voilà).
@@ -631,6 +702,11 @@ def main(argv: list[str] | None = None) -> int:
         "--fit", action="store_true", help="measure instead whether each app fits the screen"
     )
     parser.add_argument("--no-dpr2", action="store_true", help="skip the HiDPI run")
+    parser.add_argument(
+        "--cpu",
+        action="store_true",
+        help="under each app, the CPU each process and thread used a key step (Linux)",
+    )
     parser.add_argument("--no-endpoints", action="store_true", help="skip dragging A")
     parser.add_argument(
         "--no-floor", action="store_true", help="skip the floor (a slider and a text label)"

@@ -21,3 +21,40 @@ def test_benchmark_prints_all_figures(capsys):
         verdict = r"perspective \d+\.\d+x, affine \d+\.\d+x \(target at most 1x: (ok|over)\)"
         assert len(re.findall(verdict, out)) == 1  # with the default allocator only
         assert out.index("target at most 1x") < out.index("keep_freed_memory")
+
+
+def test_browser_benchmark_says_where_the_cpu_went():
+    """``bench_browser --cpu``: the CPU each thread used between two readings of /proc, in ms a
+    step, labelled by process kind (a process's main thread as "main"), largest first, the
+    smallest (under 0.5 ms a step) left out; printed under the app's row."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    import bench_browser
+
+    before = {
+        ("kernel", "10", "10"): ("python", 1.00),
+        ("chromium renderer", "20", "20"): ("chromium", 2.00),
+        ("chromium renderer", "20", "21"): ("Compositor", 0.50),
+        ("server", "30", "30"): ("jupyter-lab", 0.20),
+    }
+    after = {
+        ("kernel", "10", "10"): ("python", 1.27),  # 270 ms over 10 steps
+        ("chromium renderer", "20", "20"): ("chromium", 2.39),
+        ("chromium renderer", "20", "21"): ("Compositor", 0.577),
+        ("chromium renderer", "20", "22"): ("ThreadPoolForeg", 0.043),  # a new thread
+        ("server", "30", "30"): ("jupyter-lab", 0.204),  # 0.4 ms a step: left out
+    }
+    used = bench_browser.cpu_per_step(before, after, 10)
+    assert used == {
+        "chromium renderer main": 39.0,
+        "kernel main": 27.0,
+        "chromium renderer Compositor": 7.7,
+        "chromium renderer ThreadPoolForeg": 4.3,
+    }
+    text = bench_browser.format_cpu(used)
+    assert text.startswith("    CPU ms a key step, 78 in all: chromium renderer main 39.0, kernel")
+    assert all(len(line) <= 100 for line in text.splitlines())
+    assert all(kind in {"kernel", "server"} or kind.startswith("chromium")
+               for kind, _, _ in bench_browser.cpu_times())  # fmt: skip
