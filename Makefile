@@ -115,7 +115,8 @@ bench: $(VENV)/.installed-gl
 	$(BIN)/python -m interp.bench_outside
 
 # Every app in JupyterLab in Chromium: step latency, fps while dragging, settle time, final frame
-# (tests/bench_browser.py --help; --fit measures whether each app fits the screen instead).
+# (tests/bench_browser.py --help; --fit measures whether each app fits the screen instead;
+# --cpu adds the CPU each process and thread used a key step).
 .PHONY: bench-browser
 bench-browser: $(STAMP)
 	$(BIN)/python tests/bench_browser.py
