@@ -227,6 +227,48 @@ def test_changed_limits_redraw_the_whole_figure():
     assert (blitter.full_draws, blitter.blits) == (2, 1)
 
 
+def test_a_live_readout_is_shown_once_the_figure_stops_changing(monkeypatch):
+    """A live app draws every step at once, but shows its readout (the result in words, a live
+    region for screen readers) once no step has come for ``READOUT_DELAY``: after a burst of
+    steps that lasts longer than the delay, once, the words for the last; a single step, once,
+    after the delay. Without an event
+    loop (a script), and for a static figure, the readout follows at once."""
+    from interp.apps._app import READOUT_DELAY
+
+    app = apps.st_mapping()
+    monkeypatch.setattr(apps.App, "live", property(lambda self: True))  # drawn as a live one
+    shown = []
+    app.readout.observe(lambda change: shown.append(change["new"]), names="value")
+
+    def words(**values):  # the readout of the same app, static, at these values
+        with monkeypatch.context() as static:
+            static.setattr(apps.App, "live", property(lambda self: False))
+            other = apps.st_mapping()
+            other.set(**values)
+        return other.readout.value
+
+    async def steps(values, gap):
+        for w2 in values:
+            app.set(w2=w2)
+            await asyncio.sleep(gap)
+        drawn = app.blitter.blits + app.blitter.full_draws
+        assert shown == [], "the readout changed while the steps came"
+        await asyncio.sleep(2 * READOUT_DELAY)
+        return drawn
+
+    assert app.values["w2"] not in (2.0, 5.0, 7.0)
+    burst = [2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 6.0, 6.5, 3.0, 4.0, 4.5, 5.0]  # longer than the delay
+    drawn = asyncio.run(steps(burst, READOUT_DELAY / 5))
+    assert drawn >= len(burst)  # every step was drawn at once
+    assert shown == [words(w2=5.0)]
+    shown.clear()
+    asyncio.run(steps([7.0], 0.0))
+    assert shown == [words(w2=7.0)]
+    shown.clear()
+    app.set(w2=2.0)  # no event loop: at once
+    assert shown == [words(w2=2.0)]
+
+
 def test_a_burst_of_changes_is_drawn_once_with_the_newest_values():
     """The first message after a pause is drawn at once; the rest of the burst, which came
     while it was drawn, once, with the newest value; the release too."""
