@@ -230,8 +230,7 @@ class App:
         self._readout_timer = None
         with DRAW_LOCK:
             html = self._readout_html()
-        if html != self.readout.value:
-            self.readout.value = html
+        self.readout.value = html  # the same text again changes nothing (traitlets compares)
         if self._readout_handle is not None:
             self._readout_handle.update(HTML(html))
 
