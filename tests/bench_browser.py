@@ -19,7 +19,11 @@ through Playwright, at the default figure size (viewport 1500 x 1100, device pix
 First the floor under every app: a slider whose value the kernel writes into a text label
 (:data:`FLOOR_CELL`), stepped with the keyboard as the apps are, to the animation frame that
 shows the kernel's answer. It is the round trip every step makes (JupyterLab, the Jupyter
-server, the kernel and back) without a figure: an app's step cannot be faster.
+server, the kernel and back) without a figure: an app's step cannot be faster. Then the floor
+under every figure (:data:`FLOOR_PICTURE_CELL`): an interp app whose figure, of the size of
+the largest default figure, is one image that a step only shifts, stepped and dragged as the
+apps are: an app's step costs that, plus its own computing and drawing. The HiDPI run starts
+with it too.
 
 For lessons 1-2 the same again with endpoint A dragged by the mouse in the figure (small
 mouse moves with the button held, instead of key presses). And once more for the
@@ -308,7 +312,9 @@ def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> d
     """Drag, then: fps while the button was down, settle time, pictures after mouse-up, and
     whether the final picture is the figure at the final value (if not, and ``--save``, both
     pictures go to that folder as TAG-shown.png and TAG-truth.png)."""
+    busy_before = machine_ticks()
     moves = drag(page, start, amplitude, args.seconds, args.drag)
+    busy_after = machine_ticks()
     t_down, t_up = last_input(page, "pointerdown"), last_input(page, "pointerup")
     wait_idle(page, quiet_ms=800, timeout=60)
     during = frames_between(page, canvas, t_down, t_up)
@@ -328,6 +334,8 @@ def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> d
         "frames_during": len(during),
         "settle_ms": settle,
         "frames_after_release": len(after),
+        "drag_busy": busy_share(busy_before, busy_after),
+        "drag_cpu_ms_per_frame": cpu_ms_per_frame(busy_before, busy_after, len(during)),
         "final_mismatch": wrong,
         "final_right": wrong <= TOLERANCE and value_agrees and not is_blank(shown),
         "readout_agrees": value_agrees,
@@ -589,11 +597,122 @@ def bench_floor(context, base: str, folder: Path, steps: int) -> dict:
         page.close()
 
 
+#: The floor under every figure: an app (interp's App, so the same blitting, frames and page
+#: script) whose figure is one image, of the size of the largest default figure (820 x 474),
+#: that a step only shifts by the slider's value, and a title that quotes it: a step computes
+#: nothing. What an app's step costs beyond it is its own computing and drawing; what this
+#: row costs is the machinery (ipywidgets, ipympl, the server, the page) on this machine.
+FLOOR_PICTURE_CELL = """\
+%matplotlib widget
+import numpy as np
+from interp.apps import App
+from interp.plots.params import Param, table
+from interp.plots.registry import LessonFigure
+from interp.texture import checker
+
+class FloorPicture(LessonFigure):
+    name = "floor-picture"
+    lesson = 0
+    title = description = caption = "floor"
+    size = print_size = (9.0, 5.2)
+    PARAMS = table(shift=Param(50, 0, 100, 1, "floor shift"))
+
+    def build(self, figure):
+        ax = figure.subplots()
+        u, v = np.meshgrid(np.linspace(0, 1, 320), np.linspace(0, 1, 240))
+        self.board = np.repeat(checker(8 * u ** 1.5, 8 * v)[..., None], 3, axis=2)
+        self.image = ax.imshow(self.board)
+
+    def redraw(self):
+        shift = self.params["shift"]
+        self.image.set_data(np.roll(self.board, 3 * shift, axis=1))
+        self.image.axes.set_title(f"shifted by {shift}")
+
+    @property
+    def dynamic(self):
+        return [self.image, self.image.axes.title]
+
+App(FloorPicture)
+"""
+
+
+def machine_ticks() -> tuple[int, int]:
+    """The machine's CPU time so far, in clock ticks over all CPUs: (busy, all), from the first
+    line of ``/proc/stat``; (0, 0) where there is none."""
+    try:
+        fields = [int(x) for x in Path("/proc/stat").read_text().split("\n")[0].split()[1:]]
+    except (OSError, ValueError):
+        return 0, 0
+    idle = fields[3] + (fields[4] if len(fields) > 4 else 0)  # idle and waiting for I/O
+    return sum(fields[:8]) - idle, sum(fields[:8])
+
+
+def busy_share(before: tuple[int, int], after: tuple[int, int]) -> float:
+    """How busy the machine's CPUs were between two :func:`machine_ticks`, 0 to 1 (NaN: not
+    known)."""
+    spent = after[1] - before[1]
+    return (after[0] - before[0]) / spent if spent > 0 else math.nan
+
+
+def cpu_ms_per_frame(before: tuple[int, int], after: tuple[int, int], frames: int) -> float:
+    """The CPU time the whole machine spent between two :func:`machine_ticks`, in ms a frame
+    shown (NaN: not known)."""
+    tick = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+    busy = after[0] - before[0]
+    return 1000 * busy / tick / frames if frames and after[1] > before[1] else math.nan
+
+
+def bench_floor_picture(context, base: str, folder: Path, args, label: str = "") -> dict:
+    """Key presses and a drag on the picture floor's slider (:data:`FLOOR_PICTURE_CELL`): what
+    every app's step costs before its own computing and drawing."""
+    import nbformat
+
+    notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(FLOOR_PICTURE_CELL)])
+    notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3"}
+    nbformat.write(notebook, folder / "interp_floor_picture.ipynb")
+    page = new_page(context)
+    try:
+        open_lesson(page, base, "interp_floor_picture.ipynb", drawn_within=10)
+        canvas = page.locator(".jupyter-matplotlib-canvas-div canvas").first
+        canvas.wait_for()
+        handle = page.locator(".widget-slider .noUi-handle").first
+        before = cpu_times() if args.cpu else {}
+        latencies, misses = step_with_keys(page, handle, canvas.element_handle(), "ArrowRight",
+                                           args.steps)  # fmt: skip
+        cpu = cpu_per_step(before, cpu_times(), args.steps) if args.cpu else None
+        box = steady_box(handle)
+        centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+        busy_before = machine_ticks()
+        moves = drag(page, centre, 40.0, args.seconds, args.drag)
+        busy_after = machine_ticks()
+        t_down, t_up = last_input(page, "pointerdown"), last_input(page, "pointerup")
+        wait_idle(page, quiet_ms=800, timeout=60)
+        element = canvas.element_handle()
+        during = frames_between(page, element, t_down, t_up)
+        after = frames_between(page, element, t_up, float("inf"))
+        return {
+            "app": "floor: slider -> picture" + label,
+            "floor": "picture",
+            **({"cpu_ms_per_step": cpu} if cpu is not None else {}),
+            "fps": len(during) / ((t_up - t_down) / 1000),
+            "moves_per_s": moves / ((t_up - t_down) / 1000),
+            "settle_ms": (after[-1] - t_up) if after else 0.0,
+            "frames_after_release": len(after),
+            "drag_busy": busy_share(busy_before, busy_after),
+            "drag_cpu_ms_per_frame": cpu_ms_per_frame(busy_before, busy_after, len(during)),
+            "console_errors": list(page.errors),
+            **summary(latencies, misses),
+        }
+    finally:
+        shutdown_kernels(page)
+        page.close()
+
+
 # ---------------------------------------------------------------------------------- output
 
 HEADER = (
     f"{'app':<28} {'median':>7} {'p90':>7} {'fps':>6} {'moves':>6} {'settle':>7} {'after':>5} "
-    f"{'final right?':<14} notes"
+    f"{'busy':>5} {'CPU/pic':>7} {'final right?':<14} notes"
 )
 
 
@@ -602,10 +721,19 @@ def format_row(row: dict) -> str:
         return f"{row['app']:<28} not measured: it has no slider"
     if "error" in row:
         return f"{row['app']:<28} failed: {row['error']}"
+    if row.get("floor") == "picture":
+        return (
+            f"{row['app']:<28} {row['median_ms']:>5.0f}ms {row['p90_ms']:>5.0f}ms "
+            f"{row['fps']:>6.1f} {row['moves_per_s']:>6.1f} {row['settle_ms']:>5.0f}ms "
+            f"{row['frames_after_release']:>5} {row['drag_busy']:>5.0%} "
+            f"{row['drag_cpu_ms_per_frame']:>5.0f}ms {'':<14} nothing computed: an image shifted"
+            + (f"; {row['misses']} steps showed nothing" if row.get("misses") else "")
+        )
     if row.get("floor"):
         return (
             f"{row['app']:<28} {row['median_ms']:>5.0f}ms {row['p90_ms']:>5.0f}ms "
-            f"{'':>6} {'':>6} {'':>7} {'':>5} {'':<14} no figure: the round trip every step makes"
+            f"{'':>6} {'':>6} {'':>7} {'':>5} {'':>5} {'':>7} {'':<14} "
+            "no figure: the round trip every step makes"
             + (f"; {row['misses']} steps showed nothing" if row.get("misses") else "")
         )
     final = "yes" if row["final_right"] else f"NO ({row['final_mismatch']:.1%} px)"
@@ -620,6 +748,8 @@ def format_row(row: dict) -> str:
         f"{row['app']:<28} {row['median_ms']:>5.0f}ms {row['p90_ms']:>5.0f}ms "
         f"{row['fps']:>6.1f} {row.get('moves_per_s', math.nan):>6.1f} "
         f"{row['settle_ms']:>5.0f}ms {row['frames_after_release']:>5} "
+        f"{row.get('drag_busy', math.nan):>5.0%} "
+        f"{row.get('drag_cpu_ms_per_frame', math.nan):>5.0f}ms "
         f"{final:<14} {'; '.join(notes)}"
     )
 
@@ -709,7 +839,9 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("--no-endpoints", action="store_true", help="skip dragging A")
     parser.add_argument(
-        "--no-floor", action="store_true", help="skip the floor (a slider and a text label)"
+        "--no-floor",
+        action="store_true",
+        help="skip the floors (a slider and a text label; a slider and a picture)",
     )
     parser.add_argument(
         "--drag",
@@ -751,7 +883,9 @@ def main(argv: list[str] | None = None) -> int:
         "step: key press -> first changed canvas picture (median, p90 of "
         f"{args.steps}); fps: distinct pictures/s during a {args.seconds:g} s mouse drag; "
         f"moves: mouse moves/s in it (made by {args.drag}); "
-        "settle: mouse-up -> last change; after: pictures shown after mouse-up"
+        "settle: mouse-up -> last change; after: pictures shown after mouse-up; busy: how busy "
+        "the machine's CPUs were during the drag; CPU/pic: the machine's CPU time in it, per "
+        "picture shown"
     )
     print(HEADER)
     rows = []
@@ -763,6 +897,10 @@ def main(argv: list[str] | None = None) -> int:
             if not args.no_floor:
                 rows.append(bench_floor(context, base, Path(tmp) / "lessons", args.steps))
                 print(format_row(rows[-1]), flush=True)
+                rows.append(bench_floor_picture(context, base, Path(tmp) / "lessons", args))
+                print(format_row(rows[-1]), flush=True)
+                if rows[-1].get("cpu_ms_per_step"):
+                    print(format_cpu(rows[-1]["cpu_ms_per_step"]), flush=True)
             for notebook, names in lessons(args.tree).items():
                 if args.only and not set(names) & set(args.only):
                     continue
@@ -772,6 +910,10 @@ def main(argv: list[str] | None = None) -> int:
             if not args.no_dpr2 and (not args.only or set(hidpi) & set(args.only)):
                 context = browser.new_context(viewport=VIEWPORT, device_scale_factor=2)
                 context.add_init_script(FRAME_PROBE)
+                if not args.no_floor:
+                    folder = Path(tmp) / "lessons"
+                    rows.append(bench_floor_picture(context, base, folder, args, label=" @2x"))
+                    print(format_row(rows[-1]), flush=True)
                 rows += bench_lesson(
                     context, base, "06_checkerboards.ipynb", hidpi, args, label=" @2x",
                     only=hidpi,

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import re
 
 from interp import bench
@@ -58,3 +59,31 @@ def test_browser_benchmark_says_where_the_cpu_went():
     assert all(len(line) <= 100 for line in text.splitlines())
     assert all(kind in {"kernel", "server"} or kind.startswith("chromium")
                for kind, _, _ in bench_browser.cpu_times())  # fmt: skip
+
+
+def test_browser_benchmark_says_how_busy_the_machine_was():
+    """The drag's "busy" and "CPU/pic" columns: from two readings of /proc/stat, the share of
+    the machine's CPU time that was not idle, and that busy time per picture shown."""
+    import os
+    import sys
+    import time
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    import bench_browser
+
+    tick = os.sysconf("SC_CLK_TCK")
+    before, after = (1000, 4000), (1000 + 3 * tick // 2, 4000 + 2 * tick)  # 1.5 s busy of 2 s
+    assert bench_browser.busy_share(before, after) == 0.75
+    assert bench_browser.cpu_ms_per_frame(before, after, 30) == 50.0  # 1500 ms for 30 pictures
+    assert math.isnan(bench_browser.busy_share(before, before))
+    assert math.isnan(bench_browser.cpu_ms_per_frame(before, after, 0))
+    if not Path("/proc/stat").exists():
+        return
+    # A real reading: a thread spinning for 0.4 s keeps at least one of the CPUs busy.
+    start = bench_browser.machine_ticks()
+    end_at = time.perf_counter() + 0.4
+    while time.perf_counter() < end_at:
+        pass
+    end = bench_browser.machine_ticks()
+    assert 1 / os.cpu_count() - 0.15 <= bench_browser.busy_share(start, end) <= 1.0
