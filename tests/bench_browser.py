@@ -754,6 +754,51 @@ def format_row(row: dict) -> str:
     )
 
 
+#: Issue 12's targets for every app: (what, the row's key, the limit, whether it is a floor).
+TARGETS = (
+    ("median", "median_ms", 50.0, False),
+    ("p90", "p90_ms", 80.0, False),
+    ("fps", "fps", 25.0, True),
+    ("settle", "settle_ms", 100.0, False),
+)
+
+
+def missed(row: dict) -> list[str]:
+    """Which of :data:`TARGETS` a measured row misses (the text floor has no drag: only its
+    step is judged; a row that failed or was not measured misses nothing it has no figure for).
+
+    Examples
+    --------
+    >>> missed({"median_ms": 48.0, "p90_ms": 81.0, "fps": 25.0, "settle_ms": 120.0})
+    ['p90 81', 'settle 120']
+    >>> missed({"median_ms": 50.3, "p90_ms": 60.0, "fps": 24.9, "settle_ms": 100.0})
+    ['median 50.3', 'fps 24.9']
+    >>> missed({"median_ms": 31.0, "p90_ms": 34.0})  # the text floor: no drag
+    []
+    """
+    found = []
+    for name, key, limit, at_least in TARGETS:
+        value = row.get(key)
+        if value is None or value != value:  # not measured, or NaN
+            continue
+        if (value < limit) if at_least else (value > limit):
+            close = abs(value - limit) < 1 or name == "fps"  # 50.3 ms is not shown as 50
+            found.append(f"{name} {value:.1f}" if close else f"{name} {value:.0f}")
+    return found
+
+
+def format_verdict(rows: list[dict]) -> str:
+    """The lines after the table: which rows meet every target, and what the others miss."""
+    measured = [row for row in rows if "median_ms" in row and "error" not in row]
+    met = [row["app"] for row in measured if not missed(row)]
+    lines = [
+        "issue 12's targets (step median <= 50 ms, p90 <= 80 ms, drag >= 25 fps, settle <= 100 "
+        f"ms): met by {len(met)} of {len(measured)} rows" + (f": {', '.join(met)}" if met else "")
+    ]
+    lines += [f"  {row['app']}: {', '.join(missed(row))}" for row in measured if missed(row)]
+    return "\n".join(lines)
+
+
 def format_cpu(used: dict[str, float]) -> str:
     """The lines under an app's row that say where the CPU went in its key steps."""
     text = f"CPU ms a key step, {sum(used.values()):.0f} in all: " + ", ".join(
@@ -923,6 +968,7 @@ def main(argv: list[str] | None = None) -> int:
     after = machine_line()
     errors = sorted({e for row in rows for e in row.get("console_errors", [])})
     print()
+    print(format_verdict(rows))
     print("machine after:  " + after)
     print(f"kernels imported interp from {KERNEL_INTERP[0] if KERNEL_INTERP else '?'}")
     print(f"console errors: {len(errors)}" + "".join(f"\n  {e[:200]}" for e in errors))

@@ -87,3 +87,26 @@ def test_browser_benchmark_says_how_busy_the_machine_was():
         pass
     end = bench_browser.machine_ticks()
     assert 1 / os.cpu_count() - 0.15 <= bench_browser.busy_share(start, end) <= 1.0
+
+
+def test_browser_benchmark_judges_rows_against_the_targets():
+    """The verdict after the table: the rows meeting every one of issue 12's targets, then what
+    each other row misses; failed rows and rows without a figure are not judged."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    import bench_browser
+
+    rows = [
+        {"app": "floor: slider -> text", "floor": True, "median_ms": 31.0, "p90_ms": 34.0},
+        {"app": "depth", "median_ms": 40.0, "p90_ms": 80.0, "fps": 25.0, "settle_ms": 100.0},
+        {"app": "shader", "median_ms": 68.0, "p90_ms": 90.0, "fps": 18.1, "settle_ms": 99.0},
+        {"app": "clipping", "error": "TimeoutError: no picture"},
+        {"app": "mipmap_pyramid", "error": "LookupError: no slider"},
+    ]
+    assert bench_browser.format_verdict(rows).splitlines() == [
+        "issue 12's targets (step median <= 50 ms, p90 <= 80 ms, drag >= 25 fps, settle <= 100 "
+        "ms): met by 2 of 3 rows: floor: slider -> text, depth",
+        "  shader: median 68, p90 90, fps 18.1",
+    ]
