@@ -312,14 +312,7 @@ def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> d
     """Drag, then: fps while the button was down, settle time, pictures after mouse-up, and
     whether the final picture is the figure at the final value (if not, and ``--save``, both
     pictures go to that folder as TAG-shown.png and TAG-truth.png)."""
-    busy_before = machine_ticks()
-    moves = drag(page, start, amplitude, args.seconds, args.drag)
-    busy_after = machine_ticks()
-    t_down, t_up = last_input(page, "pointerdown"), last_input(page, "pointerup")
-    wait_idle(page, quiet_ms=800, timeout=60)
-    during = frames_between(page, canvas, t_down, t_up)
-    after = frames_between(page, canvas, t_up, float("inf"))
-    settle = (after[-1] - t_up) if after else 0.0
+    row = measured_drag(page, canvas, start, amplitude, args)
     values, truth = kernel_truth(page, count)
     shown = canvas_pixels(canvas)
     wrong = mismatch(shown, truth)
@@ -329,16 +322,32 @@ def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> d
     if readout is not None:
         value_agrees = readout_agrees(readout, values)
     return {
-        "fps": len(during) / ((t_up - t_down) / 1000),
-        "moves_per_s": moves / ((t_up - t_down) / 1000),
-        "frames_during": len(during),
-        "settle_ms": settle,
-        "frames_after_release": len(after),
-        "drag_busy": busy_share(busy_before, busy_after),
-        "drag_cpu_ms_per_frame": cpu_ms_per_frame(busy_before, busy_after, len(during)),
+        **row,
         "final_mismatch": wrong,
         "final_right": wrong <= TOLERANCE and value_agrees and not is_blank(shown),
         "readout_agrees": value_agrees,
+    }
+
+
+def measured_drag(page, canvas, start, amplitude, args) -> dict:
+    """:func:`drag`, then wait until the page is quiet: fps while the button was down, mouse
+    moves a second, settle time, pictures after mouse-up, and how busy the machine's CPUs were
+    in the drag (:func:`machine_ticks`)."""
+    busy_before = machine_ticks()
+    moves = drag(page, start, amplitude, args.seconds, args.drag)
+    busy_after = machine_ticks()
+    t_down, t_up = last_input(page, "pointerdown"), last_input(page, "pointerup")
+    wait_idle(page, quiet_ms=800, timeout=60)
+    during = frames_between(page, canvas, t_down, t_up)
+    after = frames_between(page, canvas, t_up, float("inf"))
+    return {
+        "fps": len(during) / ((t_up - t_down) / 1000),
+        "moves_per_s": moves / ((t_up - t_down) / 1000),
+        "frames_during": len(during),
+        "settle_ms": (after[-1] - t_up) if after else 0.0,
+        "frames_after_release": len(after),
+        "drag_busy": busy_share(busy_before, busy_after),
+        "drag_cpu_ms_per_frame": cpu_ms_per_frame(busy_before, busy_after, len(during)),
     }
 
 
@@ -638,13 +647,16 @@ App(FloorPicture)
 
 def machine_ticks() -> tuple[int, int]:
     """The machine's CPU time so far, in clock ticks over all CPUs: (busy, all), from the first
-    line of ``/proc/stat``; (0, 0) where there is none."""
+    line of ``/proc/stat``; (0, 0) where there is none. Busy is user, nice, system, irq and
+    softirq time; all adds idle and I/O wait. Time the hypervisor gave to other machines
+    (steal) is in neither."""
     try:
-        fields = [int(x) for x in Path("/proc/stat").read_text().split("\n")[0].split()[1:]]
+        fields = [int(x) for x in Path("/proc/stat").read_text().split("\n")[0].split()[1:8]]
+        user, nice, system, idle, iowait, irq, softirq = fields
     except (OSError, ValueError):
         return 0, 0
-    idle = fields[3] + (fields[4] if len(fields) > 4 else 0)  # idle and waiting for I/O
-    return sum(fields[:8]) - idle, sum(fields[:8])
+    busy = user + nice + system + irq + softirq
+    return busy, busy + idle + iowait
 
 
 def busy_share(before: tuple[int, int], after: tuple[int, int]) -> float:
@@ -682,24 +694,11 @@ def bench_floor_picture(context, base: str, folder: Path, args, label: str = "")
         cpu = cpu_per_step(before, cpu_times(), args.steps) if args.cpu else None
         box = steady_box(handle)
         centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
-        busy_before = machine_ticks()
-        moves = drag(page, centre, 40.0, args.seconds, args.drag)
-        busy_after = machine_ticks()
-        t_down, t_up = last_input(page, "pointerdown"), last_input(page, "pointerup")
-        wait_idle(page, quiet_ms=800, timeout=60)
-        element = canvas.element_handle()
-        during = frames_between(page, element, t_down, t_up)
-        after = frames_between(page, element, t_up, float("inf"))
         return {
             "app": "floor: slider -> picture" + label,
             "floor": "picture",
             **({"cpu_ms_per_step": cpu} if cpu is not None else {}),
-            "fps": len(during) / ((t_up - t_down) / 1000),
-            "moves_per_s": moves / ((t_up - t_down) / 1000),
-            "settle_ms": (after[-1] - t_up) if after else 0.0,
-            "frames_after_release": len(after),
-            "drag_busy": busy_share(busy_before, busy_after),
-            "drag_cpu_ms_per_frame": cpu_ms_per_frame(busy_before, busy_after, len(during)),
+            **measured_drag(page, canvas.element_handle(), centre, 40.0, args),
             "console_errors": list(page.errors),
             **summary(latencies, misses),
         }
