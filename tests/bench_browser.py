@@ -58,6 +58,7 @@ blitting, no readout) is simply not used.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 import os
@@ -579,17 +580,30 @@ def first_text_after(page, t: float, timeout: float = 10.0) -> float | None:
     )
 
 
+def open_cell(context, base: str, folder: Path, name: str, code: str, drawn_within: float):
+    """A new page with a notebook of one code cell, ``code``, written to ``folder/name`` and
+    run (:func:`open_lesson`)."""
+    import nbformat
+
+    notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(code)])
+    notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3"}
+    nbformat.write(notebook, folder / name)
+    page = new_page(context)
+    try:
+        open_lesson(page, base, name, drawn_within=drawn_within)
+    except BaseException:
+        with contextlib.suppress(Exception):
+            shutdown_kernels(page)
+        page.close()
+        raise
+    return page
+
+
 def bench_floor(context, base: str, folder: Path, steps: int) -> dict:
     """Key presses on the floor's slider (:data:`FLOOR_CELL`), each to the frame that shows the
     kernel's answer: the part of every app's step that is not its figure's."""
-    import nbformat
-
-    notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(FLOOR_CELL)])
-    notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3"}
-    nbformat.write(notebook, folder / "interp_floor.ipynb")
-    page = new_page(context)
+    page = open_cell(context, base, folder, "interp_floor.ipynb", FLOOR_CELL, drawn_within=1)
     try:
-        open_lesson(page, base, "interp_floor.ipynb", drawn_within=1)
         page.locator(".interp-floor").wait_for()
         page.evaluate(FLOOR_PROBE)
         page.locator(".widget-slider .noUi-handle").first.focus()
@@ -677,14 +691,9 @@ def cpu_ms_per_frame(before: tuple[int, int], after: tuple[int, int], frames: in
 def bench_floor_picture(context, base: str, folder: Path, args, label: str = "") -> dict:
     """Key presses and a drag on the picture floor's slider (:data:`FLOOR_PICTURE_CELL`): what
     every app's step costs before its own computing and drawing."""
-    import nbformat
-
-    notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(FLOOR_PICTURE_CELL)])
-    notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3"}
-    nbformat.write(notebook, folder / "interp_floor_picture.ipynb")
-    page = new_page(context)
+    name = "interp_floor_picture.ipynb"
+    page = open_cell(context, base, folder, name, FLOOR_PICTURE_CELL, drawn_within=10)
     try:
-        open_lesson(page, base, "interp_floor_picture.ipynb", drawn_within=10)
         canvas = page.locator(".jupyter-matplotlib-canvas-div canvas").first
         canvas.wait_for()
         handle = page.locator(".widget-slider .noUi-handle").first
