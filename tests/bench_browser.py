@@ -22,8 +22,10 @@ shows the kernel's answer. It is the round trip every step makes (JupyterLab, th
 server, the kernel and back) without a figure: an app's step cannot be faster. Then the floor
 under every figure (:data:`FLOOR_PICTURE_CELL`): an interp app whose figure, of the size of
 the largest default figure, is one image that a step only shifts, stepped and dragged as the
-apps are: an app's step costs that, plus its own computing and drawing. The HiDPI run starts
-with it too.
+apps are: an app's step costs that, plus its own computing and drawing. It is measured in a
+notebook of its own, and again at the end of lesson 6's notebook (:data:`FLOOR_LESSON`), after
+all of the lesson's cells have run: a lesson's page (its prose, equations and apps) costs the
+browser more in every frame than a page of one cell. The HiDPI run starts with the first.
 
 For lessons 1-2 the same again with endpoint A dragged by the mouse in the figure (small
 mouse moves with the button held, instead of key presses). And once more for the
@@ -580,13 +582,26 @@ def first_text_after(page, t: float, timeout: float = 10.0) -> float | None:
     )
 
 
-def open_cell(context, base: str, folder: Path, name: str, code: str, drawn_within: float):
-    """A new page with a notebook of one code cell, ``code``, written to ``folder/name`` and
-    run (:func:`open_lesson`)."""
+def open_cell(
+    context,
+    base: str,
+    folder: Path,
+    name: str,
+    code: str,
+    drawn_within: float,
+    after: str | None = None,
+):
+    """A new page with a notebook ending in one code cell, ``code``, written to
+    ``folder/name`` and run (:func:`open_lesson`): the cell alone, or after every cell of the
+    lesson ``after`` (a notebook in ``folder``)."""
     import nbformat
 
-    notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(code)])
-    notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3"}
+    if after is None:
+        notebook = nbformat.v4.new_notebook()
+        notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3"}
+    else:
+        notebook = nbformat.read(folder / after, as_version=4)
+    notebook.cells.append(nbformat.v4.new_code_cell(code))
     nbformat.write(notebook, folder / name)
     page = new_page(context)
     try:
@@ -688,15 +703,26 @@ def cpu_ms_per_frame(before: tuple[int, int], after: tuple[int, int], frames: in
     return 1000 * busy / tick / frames if frames and after[1] > before[1] else math.nan
 
 
-def bench_floor_picture(context, base: str, folder: Path, args, label: str = "") -> dict:
+#: The lesson whose page the picture floor is measured in a second time, after its own cells:
+#: lesson 6, the page of the checkerboards (and of the HiDPI run).
+FLOOR_LESSON = "06_checkerboards.ipynb"
+
+
+def bench_floor_picture(
+    context, base: str, folder: Path, args, label: str = "", after: str | None = None
+) -> dict:
     """Key presses and a drag on the picture floor's slider (:data:`FLOOR_PICTURE_CELL`): what
-    every app's step costs before its own computing and drawing."""
+    every app's step costs before its own computing and drawing; in a notebook of its own, or
+    at the end of the lesson ``after``, whose page (every cell, every app, run) a student's
+    step also pays for."""
     name = "interp_floor_picture.ipynb"
-    page = open_cell(context, base, folder, name, FLOOR_PICTURE_CELL, drawn_within=10)
+    page = open_cell(context, base, folder, name, FLOOR_PICTURE_CELL, 10, after=after)
     try:
-        canvas = page.locator(".jupyter-matplotlib-canvas-div canvas").first
+        # The floor's figure and slider are the page's last.
+        canvas = page.locator(".jupyter-matplotlib-canvas-div").last.locator("canvas").first
         canvas.wait_for()
-        handle = page.locator(".widget-slider .noUi-handle").first
+        handle = page.locator(".widget-slider .noUi-handle").last
+        handle.scroll_into_view_if_needed()
         before = cpu_times() if args.cpu else {}
         latencies, misses = step_with_keys(page, handle, canvas.element_handle(), "ArrowRight",
                                            args.steps)  # fmt: skip
@@ -704,7 +730,12 @@ def bench_floor_picture(context, base: str, folder: Path, args, label: str = "")
         box = steady_box(handle)
         centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
         return {
-            "app": "floor: slider -> picture" + label,
+            "app": (
+                "floor: slider -> picture"
+                if after is None
+                else "floor: picture, lesson " + after[:2].lstrip("0")
+            )
+            + label,
             "floor": "picture",
             **({"cpu_ms_per_step": cpu} if cpu is not None else {}),
             **measured_drag(page, canvas.element_handle(), centre, 40.0, args),
@@ -950,10 +981,12 @@ def main(argv: list[str] | None = None) -> int:
             if not args.no_floor:
                 rows.append(bench_floor(context, base, Path(tmp) / "lessons", args.steps))
                 print(format_row(rows[-1]), flush=True)
-                rows.append(bench_floor_picture(context, base, Path(tmp) / "lessons", args))
-                print(format_row(rows[-1]), flush=True)
-                if rows[-1].get("cpu_ms_per_step"):
-                    print(format_cpu(rows[-1]["cpu_ms_per_step"]), flush=True)
+                for after in (None, FLOOR_LESSON):
+                    folder = Path(tmp) / "lessons"
+                    rows.append(bench_floor_picture(context, base, folder, args, after=after))
+                    print(format_row(rows[-1]), flush=True)
+                    if rows[-1].get("cpu_ms_per_step"):
+                        print(format_cpu(rows[-1]["cpu_ms_per_step"]), flush=True)
             for notebook, names in lessons(args.tree).items():
                 if args.only and not set(names) & set(args.only):
                     continue
