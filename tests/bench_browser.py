@@ -389,10 +389,13 @@ def _cpu_kind(command: str) -> str | None:
     return None
 
 
+#: Clock ticks a second: the unit of the CPU times in ``/proc``.
+CLOCK_TICK = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+
+
 def cpu_times() -> dict[tuple[str, str, str], tuple[str, float]]:
     """CPU time (s) of every thread of the kernels, the server and Chromium, from ``/proc``:
     (kind, pid, tid) -> (thread name, user + system time); empty where there is no ``/proc``."""
-    tick = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
     found = {}
     for pid in os.listdir("/proc") if os.path.isdir("/proc") else ():
         if not pid.isdigit():
@@ -409,7 +412,7 @@ def cpu_times() -> dict[tuple[str, str, str], tuple[str, float]]:
                 continue
             name = stat[stat.find("(") + 1 : stat.rfind(")")]
             fields = stat[stat.rfind(")") + 2 :].split()
-            found[(kind, pid, tid)] = (name, (int(fields[11]) + int(fields[12])) / tick)
+            found[(kind, pid, tid)] = (name, (int(fields[11]) + int(fields[12])) / CLOCK_TICK)
     return found
 
 
@@ -698,9 +701,8 @@ def busy_share(before: tuple[int, int], after: tuple[int, int]) -> float:
 def cpu_ms_per_frame(before: tuple[int, int], after: tuple[int, int], frames: int) -> float:
     """The CPU time the whole machine spent between two :func:`machine_ticks`, in ms a frame
     shown (NaN: not known)."""
-    tick = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
     busy = after[0] - before[0]
-    return 1000 * busy / tick / frames if frames and after[1] > before[1] else math.nan
+    return 1000 * busy / CLOCK_TICK / frames if frames and after[1] > before[1] else math.nan
 
 
 #: The lesson whose page the picture floor is measured in a second time, after its own cells:
@@ -760,29 +762,24 @@ def format_row(row: dict) -> str:
         return f"{row['app']:<28} not measured: it has no slider"
     if "error" in row:
         return f"{row['app']:<28} failed: {row['error']}"
-    if row.get("floor") == "picture":
-        return (
-            f"{row['app']:<28} {row['median_ms']:>5.0f}ms {row['p90_ms']:>5.0f}ms "
-            f"{row['fps']:>6.1f} {row['moves_per_s']:>6.1f} {row['settle_ms']:>5.0f}ms "
-            f"{row['frames_after_release']:>5} {row['drag_busy']:>5.0%} "
-            f"{row['drag_cpu_ms_per_frame']:>5.0f}ms {'':<14} nothing computed: an image shifted"
-            + (f"; {row['misses']} steps showed nothing" if row.get("misses") else "")
-        )
-    if row.get("floor"):
+    if row.get("floor") and row["floor"] != "picture":
         return (
             f"{row['app']:<28} {row['median_ms']:>5.0f}ms {row['p90_ms']:>5.0f}ms "
             f"{'':>6} {'':>6} {'':>7} {'':>5} {'':>5} {'':>7} {'':<14} "
             "no figure: the round trip every step makes"
             + (f"; {row['misses']} steps showed nothing" if row.get("misses") else "")
         )
-    final = "yes" if row["final_right"] else f"NO ({row['final_mismatch']:.1%} px)"
-    if not row["readout_agrees"]:
-        final = "NO (readout)"
-    notes = []
-    if row.get("blank_runs"):
-        notes.append(f"blank after Run All in {row['blank_runs']} of {row['runs']} runs")
+    if row.get("floor"):  # the picture floor: a drag like an app's, no final picture to check
+        final, notes = "", ["nothing computed: an image shifted"]
+    else:
+        final = "yes" if row["final_right"] else f"NO ({row['final_mismatch']:.1%} px)"
+        if not row["readout_agrees"]:
+            final = "NO (readout)"
+        notes = []
+        if row.get("blank_runs"):
+            notes.append(f"blank after Run All in {row['blank_runs']} of {row['runs']} runs")
     if row.get("misses"):
-        notes.append(f"{row['misses']} steps drew nothing")
+        notes.append(f"{row['misses']} steps {'showed' if row.get('floor') else 'drew'} nothing")
     return (
         f"{row['app']:<28} {row['median_ms']:>5.0f}ms {row['p90_ms']:>5.0f}ms "
         f"{row['fps']:>6.1f} {row.get('moves_per_s', math.nan):>6.1f} "
@@ -974,15 +971,15 @@ def main(argv: list[str] | None = None) -> int:
     print(HEADER)
     rows = []
     with tempfile.TemporaryDirectory() as tmp, server("lab", Path(tmp), tree=args.tree) as base:
+        folder = Path(tmp) / "lessons"  # the server's copy of the lessons
         with sync_playwright() as playwright:
             browser = chromium(playwright)
             context = browser.new_context(viewport=VIEWPORT)
             context.add_init_script(FRAME_PROBE)
             if not args.no_floor:
-                rows.append(bench_floor(context, base, Path(tmp) / "lessons", args.steps))
+                rows.append(bench_floor(context, base, folder, args.steps))
                 print(format_row(rows[-1]), flush=True)
                 for after in (None, FLOOR_LESSON):
-                    folder = Path(tmp) / "lessons"
                     rows.append(bench_floor_picture(context, base, folder, args, after=after))
                     print(format_row(rows[-1]), flush=True)
                     if rows[-1].get("cpu_ms_per_step"):
@@ -997,7 +994,6 @@ def main(argv: list[str] | None = None) -> int:
                 context = browser.new_context(viewport=VIEWPORT, device_scale_factor=2)
                 context.add_init_script(FRAME_PROBE)
                 if not args.no_floor:
-                    folder = Path(tmp) / "lessons"
                     rows.append(bench_floor_picture(context, base, folder, args, label=" @2x"))
                     print(format_row(rows[-1]), flush=True)
                 rows += bench_lesson(

@@ -3,7 +3,12 @@
 from __future__ import annotations
 
 import math
+import os
 import re
+import time
+from pathlib import Path
+
+import bench_browser
 
 from interp import bench
 
@@ -28,12 +33,6 @@ def test_browser_benchmark_says_where_the_cpu_went():
     """``bench_browser --cpu``: the CPU each thread used between two readings of /proc, in ms a
     step, labelled by process kind (a process's main thread as "main"), largest first, the
     smallest (under 0.5 ms a step) left out; printed under the app's row."""
-    import sys
-    from pathlib import Path
-
-    sys.path.insert(0, str(Path(__file__).parent))
-    import bench_browser
-
     before = {
         ("kernel", "10", "10"): ("python", 1.00),
         ("chromium renderer", "20", "20"): ("chromium", 2.00),
@@ -64,14 +63,6 @@ def test_browser_benchmark_says_where_the_cpu_went():
 def test_browser_benchmark_says_how_busy_the_machine_was():
     """The drag's "busy" and "CPU/pic" columns: from two readings of /proc/stat, the share of
     the machine's CPU time that was not idle, and that busy time per picture shown."""
-    import os
-    import sys
-    import time
-    from pathlib import Path
-
-    sys.path.insert(0, str(Path(__file__).parent))
-    import bench_browser
-
     tick = os.sysconf("SC_CLK_TCK")
     before, after = (1000, 4000), (1000 + 3 * tick // 2, 4000 + 2 * tick)  # 1.5 s busy of 2 s
     assert bench_browser.busy_share(before, after) == 0.75
@@ -92,12 +83,6 @@ def test_browser_benchmark_says_how_busy_the_machine_was():
 def test_browser_benchmark_judges_rows_against_the_targets():
     """The verdict after the table: the rows meeting every one of issue 12's targets, then what
     each other row misses; failed rows and rows without a figure are not judged."""
-    import sys
-    from pathlib import Path
-
-    sys.path.insert(0, str(Path(__file__).parent))
-    import bench_browser
-
     rows = [
         {"app": "floor: slider -> text", "floor": True, "median_ms": 31.0, "p90_ms": 34.0},
         {"app": "depth", "median_ms": 40.0, "p90_ms": 80.0, "fps": 25.0, "settle_ms": 100.0},
