@@ -901,3 +901,92 @@ def test_kept_font_heights_lay_text_out_as_matplotlib_does():
         label = Figure(dpi=100).text(0.5, 0.5, "Ag", fontproperties=sans)
         assert label.get_window_extent(kept).bounds == label.get_window_extent(plain).bounds
     assert kept._get_font_height_metrics(sans) == first
+
+
+def _ipympl_app(make, ratio: float, scales: bool):
+    """``make()``'s app on an ipympl canvas, as in a page of device pixel ratio ``ratio`` that
+    has a view ready (and, with ``scales``, has said that it scales frames of a lower ratio);
+    and the list every frame it sends goes to, as decoded pixels."""
+    import io
+
+    from PIL import Image
+
+    backend = matplotlib.get_backend()
+    try:
+        with warnings.catch_warnings():  # ipympl's toolbar passes traitlets an argument it warns of
+            warnings.simplefilter("ignore", DeprecationWarning)
+            plt.switch_backend("module://ipympl.backend_nbagg")
+            app = make()
+    finally:
+        plt.switch_backend(backend)
+    canvas = app.figure.canvas
+    assert app.live
+    canvas.syncing_data_url = False  # as after the view's "initialized"
+    canvas.handle_event({"type": "set_device_pixel_ratio", "device_pixel_ratio": ratio})
+    canvas.draw()  # the full draw the page then asks for
+    if scales:  # the page's message, through ipympl's and matplotlib's handlers
+        canvas._handle_message(canvas, {"type": "interp_scaled_frames"}, [])
+    assert canvas.interp_scaled_frames is scales
+    frames = []
+    canvas.send_binary = lambda data: frames.append(np.asarray(Image.open(io.BytesIO(data))))
+    return app, frames
+
+
+def _drawn_afresh(make, values: dict, ratio: float) -> np.ndarray:
+    """The figure of another ``make()`` app at ``values``, drawn whole at device pixel ratio
+    ``ratio`` by matplotlib alone."""
+    other = make()
+    other.set(**values)
+    other.figure.canvas._set_device_pixel_ratio(ratio)
+    other.figure.canvas.draw()
+    return np.asarray(other.figure.canvas.buffer_rgba())
+
+
+def _drag(app, name: str, values, gap: float) -> None:
+    """Move control ``name`` through ``values``, ``gap`` seconds apart, as a page's messages
+    do, in a running event loop; then wait until the figure has settled."""
+    from interp.apps._live import IDLE
+
+    async def moves():
+        for value in values:
+            app.controls[name].value = value
+            await asyncio.sleep(gap)
+        await asyncio.sleep(4 * IDLE)
+
+    asyncio.run(moves())
+
+
+def test_a_hidpi_drag_sends_live_frames_at_ratio_1_and_a_sharp_one_when_it_stops():
+    """On a screen of device pixel ratio 2 whose page scales frames up, a drag's first step is
+    drawn sharp (ratio 2), the steps that follow it at ratio 1 (a quarter of the pixels), and
+    once they stop the figure once more at ratio 2. Every frame is the figure at its value drawn
+    afresh by matplotlib at the frame's ratio, pixel for pixel; afterwards the canvas draws at
+    ratio 2 again (pyplot's and ipympl's own draws see the screen's ratio)."""
+    make = apps.checkerboards
+    app, frames = _ipympl_app(make, ratio=2, scales=True)
+    values = [10.0, 12.0, 14.0, 16.0, 18.0, 20.0]
+    _drag(app, "pitch", values, gap=0.005)
+    width, height = app.figure.canvas.get_width_height()  # in the page's (CSS) pixels
+    sizes = [frame.shape[:2] for frame in frames]
+    sharp, live = (2 * height, 2 * width), (height, width)
+    assert sizes[0] == sharp and sizes[-1] == sharp, sizes
+    assert live in sizes and set(sizes) == {sharp, live}, sizes
+    assert sizes[1:-1] == [live] * (len(sizes) - 2), sizes  # sharp again only at the end
+    final = {**app.values, "pitch": values[-1]}
+    np.testing.assert_array_equal(frames[-1], _drawn_afresh(make, final, 2))
+    np.testing.assert_array_equal(frames[-2], _drawn_afresh(make, final, 1))
+    assert app.figure.canvas.device_pixel_ratio == 2 and app.figure.dpi == 200
+    assert not app.figure.stale
+
+
+@pytest.mark.parametrize(("ratio", "scales"), [(2, False), (1, True)])
+def test_live_frames_are_sharp_where_the_page_does_not_scale_them_or_needs_no_scaling(
+    ratio, scales
+):
+    """A page that has not said it scales frames up (another ipympl, no WebCodecs) gets every
+    frame at its own ratio, and so does a screen of ratio 1: one frame a step, no extra one."""
+    app, frames = _ipympl_app(apps.st_mapping, ratio=ratio, scales=scales)
+    _drag(app, "w2", [2.0, 2.5, 3.0, 3.5], gap=0.005)
+    width, height = app.figure.canvas.get_width_height()
+    assert {frame.shape[:2] for frame in frames} == {(ratio * height, ratio * width)}
+    assert len(frames) == app.coalescer.draws

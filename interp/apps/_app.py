@@ -26,7 +26,17 @@ import numpy as np
 from IPython.display import HTML, Javascript, display
 
 from interp._allocator import keep_freed_memory
-from interp.apps._live import DRAW_LOCK, FRAME_JS, Blitter, Coalescer, cheap_frames, take_turns
+from interp.apps._live import (
+    DRAW_LOCK,
+    FRAME_JS,
+    IDLE,
+    LIVE_RATIO,
+    Blitter,
+    Coalescer,
+    cheap_frames,
+    drawn_at,
+    take_turns,
+)
 from interp.plots import styled
 from interp.plots.params import Param
 from interp.plots.registry import LessonFigure
@@ -170,7 +180,10 @@ class App:
         self._readout_handle = None
         self._readout_timer: asyncio.TimerHandle | None = None
         self.blitter = Blitter(self.figure, self.plot.dynamic)
-        self.coalescer = Coalescer(self.refresh)
+        #: Draws the live frames of a HiDPI screen, at :data:`LIVE_RATIO` (made when needed).
+        self.live_blitter: Blitter | None = None
+        self._sharpen_timer: asyncio.TimerHandle | None = None
+        self.coalescer = Coalescer(lambda: self.refresh(following=self.coalescer.following))
         if self.live:
             cheap_frames(self.figure.canvas)
             # ipympl's view redraws its last image whenever the widget's size changes; a view
@@ -195,8 +208,14 @@ class App:
                 self.controls[name].value = value
         self.refresh()
 
-    def refresh(self) -> None:
-        """Draw with the controls' values and show the result."""
+    def refresh(self, following: bool = False) -> None:
+        """Draw with the controls' values and show the result.
+
+        ``following``: the change follows the last one within a moment (a drag, a key held
+        down); on a HiDPI screen its frame is then drawn at :data:`LIVE_RATIO`, and the figure
+        again at the screen's ratio once the changes stop.
+        """
+        ratio = self._frame_ratio(following)
         with DRAW_LOCK:  # a slider's thread, ipympl's and a cell's take turns
             # Stale before the update: a cell changed the figure itself (a label, say), which
             # the blit's background does not know; then pyplot's full redraw must still come.
@@ -204,7 +223,7 @@ class App:
             with styled(**self._style):  # titles set now must look like those set at the start
                 self.plot.update(**self.values)
             if self.live:
-                self.blitter.draw()  # at once: no round trip through the browser first
+                self._draw_frame(ratio)  # at once: no round trip through the browser first
                 self.figure.stale = changed_outside
             elif self._handle is not None:
                 self._handle.update(self.figure, metadata=self._image_metadata())
@@ -212,6 +231,47 @@ class App:
             self._readout_soon()
         else:
             self._show_readout()
+
+    def _frame_ratio(self, following: bool) -> float:
+        """The device pixel ratio to draw the next frame at: the screen's, or
+        :data:`LIVE_RATIO` for a change that follows another on a HiDPI screen whose page
+        scales frames up (it says so once it has shown one), inside a running event loop (which
+        draws the sharp frame afterwards)."""
+        canvas = self.figure.canvas
+        shown = canvas.device_pixel_ratio
+        if not (following and self.live and shown > LIVE_RATIO):
+            return shown
+        if not getattr(canvas, "interp_scaled_frames", False):
+            return shown
+        try:
+            asyncio.get_running_loop()
+        except RuntimeError:
+            return shown
+        return LIVE_RATIO
+
+    def _draw_frame(self, ratio: float) -> None:
+        """Send a frame of the figure as it is, drawn at device pixel ratio ``ratio``; one
+        below the screen's is followed by a sharp one once no change has come for
+        :data:`IDLE`."""
+        if self._sharpen_timer is not None:
+            self._sharpen_timer.cancel()
+            self._sharpen_timer = None
+        if ratio == self.figure.canvas.device_pixel_ratio:
+            self.blitter.draw()
+            return
+        if self.live_blitter is None:
+            self.live_blitter = Blitter(self.figure, self.plot.dynamic)
+        with drawn_at(self.figure.canvas, ratio):
+            self.live_blitter.draw()
+        self._sharpen_timer = asyncio.get_running_loop().call_later(IDLE, self._sharpen)
+
+    def _sharpen(self) -> None:
+        """Draw the figure, unchanged since its last frame, at the screen's ratio."""
+        self._sharpen_timer = None
+        with DRAW_LOCK:
+            stale = self.figure.stale
+            self.blitter.draw()
+            self.figure.stale = stale
 
     def _readout_soon(self) -> None:
         """Show the readout once the figure has stopped changing for :data:`READOUT_DELAY`

@@ -48,7 +48,8 @@ import struct
 import threading
 import time
 import zlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from types import MethodType
 
 import matplotlib
@@ -81,6 +82,12 @@ SETTLE = 0.004
 #: A request this long after the last draw ended (seconds) finds no messages waiting: the
 #: kernel took in those that came during the draw long ago. It is drawn without the wait.
 IDLE = 0.05
+#: The device pixel ratio of the frames drawn while a control moves on after a first step (a
+#: drag, a key held down) on a screen of a higher ratio (HiDPI): a quarter of the pixels to draw,
+#: write, send, decode and copy, which the page scales up (:data:`FRAME_JS`); once the changes
+#: stop for :data:`IDLE`, the figure is drawn once more at the screen's ratio. The first step of
+#: a series (a key press, the start of a drag) is drawn sharp at once.
+LIVE_RATIO = 1.0
 #: Held while an app changes or draws its figure, on whichever thread: matplotlib is not
 #: thread-safe, and the style sheet is applied through the global rcParams.
 DRAW_LOCK = threading.RLock()
@@ -154,6 +161,30 @@ FRAME_JS = """
     }
     return createImageBitmap(new Blob([bytes], {type: 'image/png'}));
   };
+  const sizeOf = (picture) => [picture.displayWidth || picture.width,
+                                picture.displayHeight || picture.height];
+  // A frame drawn at a lower device pixel ratio than the page's (the kernel's live frames on a
+  // HiDPI screen while a control is dragged): the canvases take its size, and the page scales
+  // them up to the figure's place, until a frame of the page's own ratio comes.
+  const isLow = (model, picture) => sizeOf(picture)[0] * 1.5 < model.size[0] * model.ratio;
+  const fitCanvases = (model, picture) => {
+    const canvas = model.offscreen_canvas;
+    if (picture && isLow(model, picture)) {
+      const [width, height] = sizeOf(picture);
+      if (canvas.width === width && canvas.height === height) return;
+      canvas.width = width;
+      canvas.height = height;
+      model._for_each_view((view) => {
+        view.canvas.width = width;
+        view.canvas.height = height;
+      });
+      model.interpLow = true;
+    } else if (model.interpLow) {  // back to ipympl's own sizes
+      model.interpLow = false;
+      model.resize_canvas();
+      model._for_each_view((view) => view.resize_and_update_canvas(model.size));
+    }
+  };
   const keep = (model, picture) => {  // the picture on show, to draw again on a resize
     if (model.interpPicture) model.interpPicture.close();
     model.interpPicture = picture;
@@ -161,7 +192,13 @@ FRAME_JS = """
       model.interpResizes = true;
       // After ipympl's own handler, which draws its last <img> into the resized canvas.
       model.on('change:_size', () => {
-        if (model.interpPicture) model.offscreen_context.drawImage(model.interpPicture, 0, 0);
+        const kept = model.interpPicture, canvas = model.offscreen_canvas;
+        if (!kept) return;
+        if (isLow(model, kept)) {
+          model.offscreen_context.drawImage(kept, 0, 0, canvas.width, canvas.height);
+        } else {
+          model.offscreen_context.drawImage(kept, 0, 0);
+        }
       });
     }
   };
@@ -173,7 +210,12 @@ FRAME_JS = """
     if (!decodes || !whole || this.disabled || loading) {
       this.interpShown = frame;  // any frame still decoding is older: dropped
       keep(this, null);
+      fitCanvases(this, null);
       return byImage.call(this, message, buffers);
+    }
+    if (!this.interpToldKernel) {  // frames of a lower ratio may come: they are scaled here
+      this.interpToldKernel = true;
+      this.send_message('interp_scaled_frames');
     }
     const data = buffers[0];
     const bytes = ArrayBuffer.isView(data)
@@ -185,6 +227,7 @@ FRAME_JS = """
         return;
       }
       this.interpShown = frame;
+      fitCanvases(this, picture);
       const canvas = this.offscreen_canvas;
       if (this.get('_image_mode') === 'full') {
         this.offscreen_context.clearRect(0, 0, canvas.width, canvas.height);
@@ -197,6 +240,7 @@ FRAME_JS = """
       if (frame < (this.interpShown || 0)) return;
       this.interpShown = frame;
       keep(this, null);
+      fitCanvases(this, null);
       byImage.call(this, message, buffers);
     });
   };
@@ -518,6 +562,10 @@ class Coalescer:
     (the messages that came during it may still be waiting), else at the loop's next turn.
     Requests arriving before it runs are absorbed, so ``draw`` sees only the newest state.
     Without a running loop (tests, scripts) ``draw`` runs at once.
+
+    While ``draw`` runs, :attr:`following` says whether it is the first of a series (False: a
+    key press, a drag's first step, a change without an event loop) or follows the last draw
+    within ``idle`` (True: a drag, a key held down).
     """
 
     def __init__(
@@ -528,6 +576,8 @@ class Coalescer:
         self._idle = idle
         self._scheduled = False
         self._ended = -math.inf
+        self._follows = False
+        self.following = False
         self.requests = self.draws = 0
 
     def request(self) -> None:
@@ -540,18 +590,60 @@ class Coalescer:
             return
         if not self._scheduled:
             self._scheduled = True
-            if time.monotonic() - self._ended > self._idle:
-                loop.call_soon(self._run)
-            else:
+            self._follows = time.monotonic() - self._ended <= self._idle
+            if self._follows:
                 loop.call_later(self._settle, self._run)
+            else:
+                loop.call_soon(self._run)
 
     def _run(self) -> None:
         self._scheduled = False
         self.draws += 1
+        self.following, self._follows = self._follows, False
         try:
             self._draw()
         finally:
+            self.following = False
             self._ended = time.monotonic()
+
+
+@contextmanager
+def drawn_at(canvas: FigureCanvasAgg, ratio: float) -> Iterator[None]:
+    """Inside, ``canvas`` draws its figure at device pixel ratio ``ratio``, into a renderer
+    kept for that ratio; afterwards the ratio, the renderer and the figure's staleness are as
+    before. Outside, nothing is changed: pyplot's and ipympl's own draws keep the screen's.
+
+    Examples
+    --------
+    >>> from matplotlib.backends.backend_agg import FigureCanvasAgg
+    >>> from matplotlib.figure import Figure
+    >>> canvas = FigureCanvasAgg(Figure(figsize=(2, 1), dpi=100))
+    >>> canvas._set_device_pixel_ratio(2)
+    True
+    >>> with drawn_at(canvas, 1):
+    ...     canvas.draw()
+    ...     canvas.buffer_rgba().shape
+    (100, 200, 4)
+    >>> canvas.device_pixel_ratio, canvas.figure.dpi
+    (2, 200)
+    """
+    shown = canvas.device_pixel_ratio
+    if ratio == shown:
+        yield
+        return
+    stale = canvas.figure.stale
+    kept = canvas.__dict__.setdefault("interp_renderers", {})
+    saved = (getattr(canvas, "renderer", None), canvas._lastKey)
+    canvas._set_device_pixel_ratio(ratio)
+    if ratio in kept:
+        canvas.renderer, canvas._lastKey = kept[ratio]
+    try:
+        yield
+    finally:
+        kept[ratio] = (getattr(canvas, "renderer", None), canvas._lastKey)
+        canvas._set_device_pixel_ratio(shown)
+        canvas.renderer, canvas._lastKey = saved
+        canvas.figure.stale = stale
 
 
 def png(rgba: np.ndarray, level: int = PNG_LEVEL, rows: str = "none") -> bytes:
@@ -699,5 +791,11 @@ def cheap_frames(canvas: object) -> None:
     (the class :data:`WHOLE_FRAMES`, for :data:`FRAME_JS`)."""
     if hasattr(canvas, "get_diff_image"):
         canvas.get_diff_image = MethodType(_frame_image, canvas)
+        # The page's message that it scales frames of a lower ratio up (see LIVE_RATIO); read
+        # by FigureCanvasWebAggCore.handle_event, which finds a handler by the message's type.
+        canvas.interp_scaled_frames = False
+        canvas.handle_interp_scaled_frames = lambda event: setattr(
+            canvas, "interp_scaled_frames", True
+        )
         if hasattr(canvas, "add_class"):
             canvas.add_class(WHOLE_FRAMES)
