@@ -434,6 +434,51 @@ def test_frames_are_decoded_off_the_main_thread(browser, lab, lesson, request, d
             context.close()
 
 
+#: Run in the page: record the backing width of ``canvas`` (a figure's) each time a picture is
+#: drawn into it, in ``window.__widths``.
+RECORD_WIDTHS = """(canvas) => {
+  window.__widths = [];
+  const drawImage = CanvasRenderingContext2D.prototype.drawImage;
+  CanvasRenderingContext2D.prototype.drawImage = function (...args) {
+    if (this.canvas === canvas) window.__widths.push(canvas.width);
+    return drawImage.apply(this, args);
+  };
+}"""
+
+
+def test_a_hidpi_drag_shows_live_frames_at_ratio_1_then_the_sharp_figure(browser, lab, request):
+    """On a HiDPI screen (device pixel ratio 2) a drag's frames after its first are drawn by
+    the kernel at ratio 1, and the page shows them scaled up to the figure's place (its
+    canvas takes the frame's size); once the drag stops the figure comes at ratio 2 again:
+    the canvas has its full size and shows the app's figure at the slider's final value,
+    drawn afresh at ratio 2; nothing went wrong on the page."""
+    name = "st_mapping"
+    context = browser.new_context(viewport={"width": 1500, "height": 1100}, device_scale_factor=2)
+    context.add_init_script(FRAME_PROBE)
+    page = new_page(context)
+    request.node.page_on_show = page
+    try:
+        counts = open_lesson_copy(page, lab, LESSON_OF[name])
+        root = app_root(page, name)
+        canvas = figure_canvas(root)
+        css = canvas.evaluate("c => c.getBoundingClientRect().width")
+        sharp = canvas.evaluate("c => c.width")
+        assert abs(sharp - 2 * css) <= 2, (sharp, css)  # sharp before the drag
+        canvas.evaluate(RECORD_WIDTHS)
+        drag_back_and_forth(page, root, name)
+        widths = page.evaluate("window.__widths")
+        live = [width for width in widths if abs(width - css) <= 2]
+        assert live, f"no live frame at ratio 1 while dragging: {widths}"
+        assert set(widths) == {sharp, *live}, widths
+        assert widths[-1] == sharp, f"the last picture is not sharp: {widths}"
+        assert canvas.evaluate("c => c.width") == sharp
+        assert_is_the_apps_figure(page, canvas, counts[name], "after the HiDPI drags")
+        assert_no_errors(page)
+    finally:
+        shutdown_kernel(page)
+        context.close()
+
+
 @pytest.mark.parametrize("notebook", FLAKY_LESSONS)
 def test_run_all_draws_every_figure_every_time(browser, lab, request, notebook):
     """Run All in a fresh kernel, again and again: every figure appears every time. (A first

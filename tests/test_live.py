@@ -904,9 +904,11 @@ def test_kept_font_heights_lay_text_out_as_matplotlib_does():
 
 
 def _ipympl_app(make, ratio: float, scales: bool):
-    """``make()``'s app on an ipympl canvas, as in a page of device pixel ratio ``ratio`` that
-    has a view ready (and, with ``scales``, has said that it scales frames of a lower ratio);
-    and the list every frame it sends goes to, as decoded pixels."""
+    """``make()``'s app on an ipympl canvas, as in a page of device pixel ratio ``ratio``: its
+    view said it is ready (and got a frame, at ratio 1), then told the kernel its ratio and
+    asked for the full draw that follows; with ``scales``, it has also said that it scales
+    frames of a lower ratio. And the list every frame sent from then on goes to: (the
+    controls' values when it was sent, its pixels decoded)."""
     import io
 
     from PIL import Image
@@ -921,14 +923,17 @@ def _ipympl_app(make, ratio: float, scales: bool):
         plt.switch_backend(backend)
     canvas = app.figure.canvas
     assert app.live
-    canvas.syncing_data_url = False  # as after the view's "initialized"
+    canvas.syncing_data_url = False  # as ipympl's handler of "initialized" does; then the app's:
+    app._canvas_message(canvas, {"type": "initialized"}, [])  # a frame at ratio 1
     canvas.handle_event({"type": "set_device_pixel_ratio", "device_pixel_ratio": ratio})
     canvas.draw()  # the full draw the page then asks for
     if scales:  # the page's message, through ipympl's and matplotlib's handlers
         canvas._handle_message(canvas, {"type": "interp_scaled_frames"}, [])
     assert canvas.interp_scaled_frames is scales
     frames = []
-    canvas.send_binary = lambda data: frames.append(np.asarray(Image.open(io.BytesIO(data))))
+    canvas.send_binary = lambda data: frames.append(
+        (dict(app.values), np.asarray(Image.open(io.BytesIO(data))))
+    )
     return app, frames
 
 
@@ -956,25 +961,41 @@ def _drag(app, name: str, values, gap: float) -> None:
     asyncio.run(moves())
 
 
-def test_a_hidpi_drag_sends_live_frames_at_ratio_1_and_a_sharp_one_when_it_stops():
+@pytest.mark.parametrize(
+    ("make", "name", "drags"),
+    [
+        (apps.checkerboards, "pitch", [[10.0, 12.0, 14.0, 16.0, 18.0, 20.0]]),
+        # Legends kept as pictures, and limits that change (the background is drawn again) or
+        # not: the second drag ends where the first did, so the last sharp frame puts back the
+        # legends kept at the end of the first, after live frames that drew them at ratio 1.
+        (apps.st_mapping, "w2", [[3.0, 3.5, 4.0, 4.5, 5.0, 6.14], [5.0, 4.0, 6.0, 6.14]]),
+    ],
+    ids=["checkerboards", "st_mapping"],
+)
+def test_a_hidpi_drag_sends_live_frames_at_ratio_1_and_a_sharp_one_when_it_stops(
+    make, name, drags
+):
     """On a screen of device pixel ratio 2 whose page scales frames up, a drag's first step is
     drawn sharp (ratio 2), the steps that follow it at ratio 1 (a quarter of the pixels), and
-    once they stop the figure once more at ratio 2. Every frame is the figure at its value drawn
-    afresh by matplotlib at the frame's ratio, pixel for pixel; afterwards the canvas draws at
-    ratio 2 again (pyplot's and ipympl's own draws see the screen's ratio)."""
-    make = apps.checkerboards
+    once they stop the figure once more at ratio 2. Every frame is the figure at its values
+    drawn afresh by matplotlib at the frame's ratio, pixel for pixel; afterwards the canvas
+    draws at ratio 2 again (pyplot's and ipympl's own draws see the screen's ratio)."""
     app, frames = _ipympl_app(make, ratio=2, scales=True)
-    values = [10.0, 12.0, 14.0, 16.0, 18.0, 20.0]
-    _drag(app, "pitch", values, gap=0.005)
     width, height = app.figure.canvas.get_width_height()  # in the page's (CSS) pixels
-    sizes = [frame.shape[:2] for frame in frames]
     sharp, live = (2 * height, 2 * width), (height, width)
-    assert sizes[0] == sharp and sizes[-1] == sharp, sizes
-    assert live in sizes and set(sizes) == {sharp, live}, sizes
-    assert sizes[1:-1] == [live] * (len(sizes) - 2), sizes  # sharp again only at the end
-    final = {**app.values, "pitch": values[-1]}
-    np.testing.assert_array_equal(frames[-1], _drawn_afresh(make, final, 2))
-    np.testing.assert_array_equal(frames[-2], _drawn_afresh(make, final, 1))
+    for values in drags:
+        first = len(frames)
+        _drag(app, name, values, gap=0.005)
+        sizes = [frame.shape[:2] for _, frame in frames[first:]]
+        assert sizes[0] == sharp and sizes[-1] == sharp, sizes
+        assert live in sizes and set(sizes) == {sharp, live}, sizes
+        assert sizes[1:-1] == [live] * (len(sizes) - 2), sizes  # sharp again only at the end
+        assert frames[-1][0][name] == values[-1]
+    for step, (shown, frame) in enumerate(frames):
+        ratio = 2 if frame.shape[:2] == sharp else 1
+        np.testing.assert_array_equal(
+            frame, _drawn_afresh(make, shown, ratio), err_msg=f"frame {step} at {shown}"
+        )
     assert app.figure.canvas.device_pixel_ratio == 2 and app.figure.dpi == 200
     assert not app.figure.stale
 
@@ -988,5 +1009,5 @@ def test_live_frames_are_sharp_where_the_page_does_not_scale_them_or_needs_no_sc
     app, frames = _ipympl_app(apps.st_mapping, ratio=ratio, scales=scales)
     _drag(app, "w2", [2.0, 2.5, 3.0, 3.5], gap=0.005)
     width, height = app.figure.canvas.get_width_height()
-    assert {frame.shape[:2] for frame in frames} == {(ratio * height, ratio * width)}
+    assert {frame.shape[:2] for _, frame in frames} == {(ratio * height, ratio * width)}
     assert len(frames) == app.coalescer.draws

@@ -381,14 +381,23 @@ class Blitter:
     def _draw_legend(self, legend: Legend) -> None:
         """Draw a static, opaque legend: whole the first time, keeping the picture of its
         inside; then its box alone (whose edge pixels blend with what is behind) and that
-        picture put back, which is what drawing it whole would give, pixel for pixel."""
+        picture put back, which is what drawing it whole would give, pixel for pixel.
+
+        The box is placed as it was when the legend was drawn whole: a legend sets its box's
+        place (in the canvas's pixels) and its corners' size only when drawn whole, and another
+        blitter of the figure (:class:`App`'s at another pixel ratio) may have done that since.
+        """
+        patch = legend.legendPatch
         kept = self.legends.get(id(legend))
         if kept is not None:
-            self.figure.draw_artist(legend.legendPatch)
-            self.figure.canvas.restore_region(kept)
+            inside, bounds, scale = kept
+            patch.set_bounds(*bounds)
+            patch.set_mutation_scale(scale)
+            self.figure.draw_artist(patch)
+            self.figure.canvas.restore_region(inside)
             return
         self.figure.draw_artist(legend)
-        box = legend.legendPatch.get_window_extent()
+        box = patch.get_window_extent()
         inside = Bbox.from_extents(
             math.ceil(box.x0) + 1,
             math.ceil(box.y0) + 1,
@@ -396,7 +405,11 @@ class Blitter:
             math.floor(box.y1) - 1,
         )
         if inside.width > 0 and inside.height > 0:
-            self.legends[id(legend)] = self.figure.canvas.copy_from_bbox(inside)
+            self.legends[id(legend)] = (
+                self.figure.canvas.copy_from_bbox(inside),
+                (patch.get_x(), patch.get_y(), patch.get_width(), patch.get_height()),
+                patch.get_mutation_scale(),
+            )
 
     def _draw_title(self, title: Text) -> None:
         """Draw an axes title, or put back its picture when it looks as when last drawn.
