@@ -972,9 +972,7 @@ def _drag(app, name: str, values, gap: float) -> None:
     ],
     ids=["checkerboards", "st_mapping"],
 )
-def test_a_hidpi_drag_sends_live_frames_at_ratio_1_and_a_sharp_one_when_it_stops(
-    make, name, drags
-):
+def test_a_hidpi_drag_sends_live_frames_at_ratio_1_and_a_sharp_one_when_it_stops(make, name, drags):
     """On a screen of device pixel ratio 2 whose page scales frames up, a drag's first step is
     drawn sharp (ratio 2), the steps that follow it at ratio 1 (a quarter of the pixels), and
     once they stop the figure once more at ratio 2. Every frame is the figure at its values
