@@ -29,8 +29,8 @@ from interp._allocator import keep_freed_memory
 from interp.apps._live import (
     DRAW_LOCK,
     FRAME_JS,
-    IDLE,
     LIVE_RATIO,
+    SHARPEN,
     Blitter,
     Coalescer,
     cheap_frames,
@@ -252,7 +252,7 @@ class App:
     def _draw_frame(self, ratio: float) -> None:
         """Send a frame of the figure as it is, drawn at device pixel ratio ``ratio``; one
         below the screen's is followed by a sharp one once no change has come for
-        :data:`IDLE`."""
+        :data:`SHARPEN`."""
         if self._sharpen_timer is not None:
             self._sharpen_timer.cancel()
             self._sharpen_timer = None
@@ -263,7 +263,7 @@ class App:
             self.live_blitter = Blitter(self.figure, self.plot.dynamic)
         with drawn_at(self.figure.canvas, ratio):
             self.live_blitter.draw()
-        self._sharpen_timer = asyncio.get_running_loop().call_later(IDLE, self._sharpen)
+        self._sharpen_timer = asyncio.get_running_loop().call_later(SHARPEN, self._sharpen)
 
     def _sharpen(self) -> None:
         """Draw the figure, unchanged since its last frame, at the screen's ratio."""
