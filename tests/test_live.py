@@ -1009,3 +1009,17 @@ def test_live_frames_are_sharp_where_the_page_does_not_scale_them_or_needs_no_sc
     width, height = app.figure.canvas.get_width_height()
     assert {frame.shape[:2] for _, frame in frames} == {(ratio * height, ratio * width)}
     assert len(frames) == app.coalescer.draws
+
+
+def test_a_page_that_appears_gets_sharp_frames_until_it_says_it_scales_them():
+    """A page reloaded while the kernel runs shows the apps' figures again, but does not run
+    their page script again (it scales nothing): its view's "initialized" message makes the
+    frames sharp until a page says again that it scales them up."""
+    app, frames = _ipympl_app(apps.st_mapping, ratio=2, scales=True)
+    canvas = app.figure.canvas
+    canvas._handle_message(canvas, {"type": "initialized"}, [])
+    app._canvas_message(canvas, {"type": "initialized"}, [])
+    assert not canvas.interp_scaled_frames
+    _drag(app, "w2", [2.0, 2.5, 3.0, 3.5], gap=0.005)
+    width, height = canvas.get_width_height()
+    assert {frame.shape[:2] for _, frame in frames} == {(2 * height, 2 * width)}

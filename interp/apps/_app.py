@@ -295,9 +295,14 @@ class App:
             self._readout_handle.update(HTML(html))
 
     def _canvas_message(self, canvas: object, content: dict, buffers: list) -> None:
-        """After ipympl's own handler: send a fresh full frame to a view that just appeared."""
+        """After ipympl's own handler: send a fresh full frame to a view that just appeared.
+
+        A page that appears may not scale frames of a lower ratio up (a page reloaded does not
+        run the apps' page script again): until it says it does, frames are sharp.
+        """
         if content.get("type") == "initialized":
             with DRAW_LOCK:
+                canvas.interp_scaled_frames = False
                 self.figure.canvas._force_full = True
                 self.blitter.draw()
 
