@@ -434,26 +434,40 @@ def test_frames_are_decoded_off_the_main_thread(browser, lab, lesson, request, d
             context.close()
 
 
-#: Run in the page: record the backing width of ``canvas`` (a figure's) each time a picture is
-#: drawn into it, in ``window.__widths``.
-RECORD_WIDTHS = """(canvas) => {
-  window.__widths = [];
+#: Run in the page: record, each time a picture is drawn into ``canvas`` (a figure's) or a
+#: frame (an image, a decoded frame) into any canvas, the width of what is drawn, of the canvas
+#: it is drawn into, and how wide it is drawn there, in ``window.__draws``.
+RECORD_DRAWS = """(canvas) => {
+  window.__draws = [];
   const drawImage = CanvasRenderingContext2D.prototype.drawImage;
-  CanvasRenderingContext2D.prototype.drawImage = function (...args) {
-    if (this.canvas === canvas) window.__widths.push(canvas.width);
-    return drawImage.apply(this, args);
+  const isFrame = (source) => source instanceof HTMLImageElement
+      || source instanceof ImageBitmap || source instanceof VideoFrame;
+  CanvasRenderingContext2D.prototype.drawImage = function (source, ...args) {
+    if (this.canvas === canvas || isFrame(source)) {
+      const width = source.displayWidth || source.width;
+      window.__draws.push({into: this.canvas === canvas ? 'view' : 'frame', width,
+                           canvas: this.canvas.width, drawn: args.length > 2 ? args[2] : width});
+    }
+    return drawImage.call(this, source, ...args);
   };
 }"""
 
 
-def test_a_hidpi_drag_shows_live_frames_at_ratio_1_then_the_sharp_figure(browser, lab, request):
-    """On a HiDPI screen (device pixel ratio 2) a drag's frames after its first are drawn by
-    the kernel at ratio 1, and the page shows them scaled up to the figure's place (its
-    canvas takes the frame's size); once the drag stops the figure comes at ratio 2 again:
-    the canvas has its full size and shows the app's figure at the slider's final value,
-    drawn afresh at ratio 2; nothing went wrong on the page."""
+@pytest.mark.parametrize("ratio", [2, 1.5])
+def test_a_hidpi_drag_shows_live_frames_at_ratio_1_then_the_sharp_figure(
+    browser, lab, request, ratio
+):
+    """On a HiDPI screen (device pixel ratio 2, or 1.5: a laptop's screen at 150 %) a drag's
+    frames after its first are drawn by the kernel at ratio 1, and the page shows them scaled
+    up to the figure's place: its canvases take the frame's size, so that every frame fills
+    the canvas it is drawn into and every copy of it fills the figure's canvas. Once the drag
+    stops the figure comes at the screen's ratio again: the canvas has its full size and shows
+    the app's figure at the slider's final value, drawn afresh at that ratio; nothing went
+    wrong on the page."""
     name = "st_mapping"
-    context = browser.new_context(viewport={"width": 1500, "height": 1100}, device_scale_factor=2)
+    context = browser.new_context(
+        viewport={"width": 1500, "height": 1100}, device_scale_factor=ratio
+    )
     context.add_init_script(FRAME_PROBE)
     page = new_page(context)
     request.node.page_on_show = page
@@ -463,15 +477,18 @@ def test_a_hidpi_drag_shows_live_frames_at_ratio_1_then_the_sharp_figure(browser
         canvas = figure_canvas(root)
         css = canvas.evaluate("c => c.getBoundingClientRect().width")
         sharp = canvas.evaluate("c => c.width")
-        assert abs(sharp - 2 * css) <= 2, (sharp, css)  # sharp before the drag
-        canvas.evaluate(RECORD_WIDTHS)
+        assert abs(sharp - ratio * css) <= 2, (sharp, css)  # sharp before the drag
+        canvas.evaluate(RECORD_DRAWS)
         drag_back_and_forth(page, root, name)
-        widths = page.evaluate("window.__widths")
+        draws = page.evaluate("window.__draws")
+        widths = [d["canvas"] for d in draws if d["into"] == "view"]
         live = [width for width in widths if abs(width - css) <= 2]
         assert live, f"no live frame at ratio 1 while dragging: {widths}"
         assert set(widths) == {sharp, *live}, widths
         assert widths[-1] == sharp, f"the last picture is not sharp: {widths}"
         assert canvas.evaluate("c => c.width") == sharp
+        unfilled = [d for d in draws if abs(d["drawn"] - d["canvas"]) > 1]
+        assert not unfilled, f"pictures that do not fill their canvas: {unfilled[:5]}"
         assert_is_the_apps_figure(page, canvas, counts[name], "after the HiDPI drags")
         assert_no_errors(page)
     finally:

@@ -947,16 +947,15 @@ def _drawn_afresh(make, values: dict, ratio: float) -> np.ndarray:
     return np.asarray(other.figure.canvas.buffer_rgba())
 
 
-def _drag(app, name: str, values, gap: float) -> None:
+def _drag(app, name: str, values, gap: float, settle: float = 0.2) -> None:
     """Move control ``name`` through ``values``, ``gap`` seconds apart, as a page's messages
-    do, in a running event loop; then wait until the figure has settled."""
-    from interp.apps._live import IDLE
+    do, in a running event loop; then wait ``settle`` seconds for the figure to settle."""
 
     async def moves():
         for value in values:
             app.controls[name].value = value
             await asyncio.sleep(gap)
-        await asyncio.sleep(4 * IDLE)
+        await asyncio.sleep(settle)
 
     asyncio.run(moves())
 
@@ -972,18 +971,26 @@ def _drag(app, name: str, values, gap: float) -> None:
     ],
     ids=["checkerboards", "st_mapping"],
 )
-def test_a_hidpi_drag_sends_live_frames_at_ratio_1_and_a_sharp_one_when_it_stops(make, name, drags):
+def test_a_hidpi_drag_sends_live_frames_at_ratio_1_and_a_sharp_one_when_it_stops(
+    make, name, drags, monkeypatch
+):
     """On a screen of device pixel ratio 2 whose page scales frames up, a drag's first step is
     drawn sharp (ratio 2), the steps that follow it at ratio 1 (a quarter of the pixels), and
     once they stop the figure once more at ratio 2. Every frame is the figure at its values
     drawn afresh by matplotlib at the frame's ratio, pixel for pixel; afterwards the canvas
     draws at ratio 2 again (pyplot's and ipympl's own draws see the screen's ratio)."""
+    from interp.apps import _app
+
     app, frames = _ipympl_app(make, ratio=2, scales=True)
+    # A series of steps, and the wait for the sharp frame, as long as a stalled test machine
+    # may need: a pause of 50 ms between two steps would make the second the first of another.
+    app.coalescer._idle = 0.5
+    monkeypatch.setattr(_app, "SHARPEN", 0.5)
     width, height = app.figure.canvas.get_width_height()  # in the page's (CSS) pixels
     sharp, live = (2 * height, 2 * width), (height, width)
     for values in drags:
         first = len(frames)
-        _drag(app, name, values, gap=0.005)
+        _drag(app, name, values, gap=0.005, settle=1.5)
         sizes = [frame.shape[:2] for _, frame in frames[first:]]
         assert sizes[0] == sharp and sizes[-1] == sharp, sizes
         assert live in sizes and set(sizes) == {sharp, live}, sizes
@@ -1002,8 +1009,9 @@ def test_a_hidpi_drag_sends_live_frames_at_ratio_1_and_a_sharp_one_when_it_stops
 def test_live_frames_are_sharp_where_the_page_does_not_scale_them_or_needs_no_scaling(
     ratio, scales
 ):
-    """A page that has not said it scales frames up (another ipympl, no WebCodecs) gets every
-    frame at its own ratio, and so does a screen of ratio 1: one frame a step, no extra one."""
+    """A page that has not said it scales frames up (another ipympl, or a page that has not
+    decoded a frame of ours yet) gets every frame at its own ratio, and so does a screen of
+    ratio 1: one frame a step, no extra one."""
     app, frames = _ipympl_app(apps.st_mapping, ratio=ratio, scales=scales)
     _drag(app, "w2", [2.0, 2.5, 3.0, 3.5], gap=0.005)
     width, height = app.figure.canvas.get_width_height()

@@ -215,8 +215,8 @@ class App:
         down); on a HiDPI screen its frame is then drawn at :data:`LIVE_RATIO`, and the figure
         again at the screen's ratio once the changes stop.
         """
-        ratio = self._frame_ratio(following)
         with DRAW_LOCK:  # a slider's thread, ipympl's and a cell's take turns
+            ratio = self._frame_ratio(following)
             # Stale before the update: a cell changed the figure itself (a label, say), which
             # the blit's background does not know; then pyplot's full redraw must still come.
             changed_outside = self.figure.stale
@@ -235,8 +235,8 @@ class App:
     def _frame_ratio(self, following: bool) -> float:
         """The device pixel ratio to draw the next frame at: the screen's, or
         :data:`LIVE_RATIO` for a change that follows another on a HiDPI screen whose page
-        scales frames up (it says so once it has shown one), inside a running event loop (which
-        draws the sharp frame afterwards)."""
+        scales frames up (it says so once it has decoded a frame of ours), inside a running
+        event loop (which draws the sharp frame afterwards)."""
         canvas = self.figure.canvas
         shown = canvas.device_pixel_ratio
         if not (following and self.live and shown > LIVE_RATIO):
@@ -261,13 +261,18 @@ class App:
             return
         if self.live_blitter is None:
             self.live_blitter = Blitter(self.figure, self.plot.dynamic)
-        with drawn_at(self.figure.canvas, ratio):
-            self.live_blitter.draw()
-        self._sharpen_timer = asyncio.get_running_loop().call_later(SHARPEN, self._sharpen)
+        try:
+            with drawn_at(self.figure.canvas, ratio):
+                self.live_blitter.draw()
+        finally:  # whatever happened, the screen's ratio follows
+            self._sharpen_timer = asyncio.get_running_loop().call_later(SHARPEN, self._sharpen)
 
     def _sharpen(self) -> None:
-        """Draw the figure, unchanged since its last frame, at the screen's ratio."""
+        """Draw the figure, unchanged since its last frame, at the screen's ratio (unless a
+        change is about to be drawn: its frame sets the timer again)."""
         self._sharpen_timer = None
+        if self.coalescer.pending:
+            return
         with DRAW_LOCK:
             stale = self.figure.stale
             self.blitter.draw()

@@ -88,10 +88,10 @@ SETTLE = 0.004
 #: kernel took in those that came during the draw long ago. It is drawn without the wait.
 IDLE = 0.05
 #: The device pixel ratio of the frames drawn while a control moves on after a first step (a
-#: drag, a key held down) on a screen of a higher ratio (HiDPI): a quarter of the pixels to draw,
-#: write, send, decode and copy, which the page scales up (:data:`FRAME_JS`); once the changes
-#: stop for :data:`SHARPEN`, the figure is drawn once more at the screen's ratio. The first
-#: step of a series (a key press, the start of a drag) is drawn sharp at once.
+#: drag, a key held down) on a screen of a higher ratio (HiDPI): at ratio 2 a quarter of the
+#: pixels to draw, write, send, decode and copy, which the page scales up (:data:`FRAME_JS`);
+#: once the changes stop for :data:`SHARPEN`, the figure is drawn once more at the screen's
+#: ratio. The first step of a series (a key press, the start of a drag) is drawn sharp at once.
 LIVE_RATIO = 1.0
 #: How long after a live frame of a lower ratio, with no change since, the figure is drawn at
 #: the screen's ratio (seconds): as long as :data:`IDLE`, after which a change counts as the
@@ -174,21 +174,28 @@ FRAME_JS = """
   };
   const sizeOf = (picture) => [picture.displayWidth || picture.width,
                                 picture.displayHeight || picture.height];
+  // The width and height a PNG file's header gives.
+  const pngSize = (bytes) => {
+    const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    return bytes.byteLength >= 24 ? [view.getUint32(16), view.getUint32(20)] : null;
+  };
   // A frame drawn at a lower device pixel ratio than the page's (the kernel's live frames on a
-  // HiDPI screen while a control is dragged): the canvases take its size, and the page scales
-  // them up to the figure's place, until a frame of the page's own ratio comes.
-  const isLow = (model, picture) => sizeOf(picture)[0] * 1.5 < model.size[0] * model.ratio;
-  const fitCanvases = (model, picture) => {
-    const canvas = model.offscreen_canvas;
-    if (picture && isLow(model, picture)) {
-      const [width, height] = sizeOf(picture);
-      if (canvas.width === width && canvas.height === height) return;
-      canvas.width = width;
-      canvas.height = height;
-      model._for_each_view((view) => {
-        view.canvas.width = width;
-        view.canvas.height = height;
-      });
+  // HiDPI screen while a control is dragged) is narrower than ipympl's canvas: the canvases
+  // take its size, and the page scales them up to the figure's place (their style's size),
+  // until a frame of the page's own ratio comes. (Frames of the page's ratio may be a pixel
+  // wider than its canvas: ipympl rounds the figure's size down.)
+  const isLow = (model, size) => !!size && size[0] < model.size[0] * model.ratio - 2;
+  const fitCanvases = (model, size) => {
+    if (isLow(model, size)) {
+      const [width, height] = size;
+      const fit = (canvas) => {  // setting a canvas's size clears it: only where it differs
+        if (canvas.width !== width || canvas.height !== height) {
+          canvas.width = width;
+          canvas.height = height;
+        }
+      };
+      fit(model.offscreen_canvas);
+      model._for_each_view((view) => fit(view.canvas));
       model.interpLow = true;
     } else if (model.interpLow) {  // back to ipympl's own sizes
       model.interpLow = false;
@@ -205,7 +212,7 @@ FRAME_JS = """
       model.on('change:_size', () => {
         const kept = model.interpPicture, canvas = model.offscreen_canvas;
         if (!kept) return;
-        if (isLow(model, kept)) {
+        if (isLow(model, sizeOf(kept))) {
           model.offscreen_context.drawImage(kept, 0, 0, canvas.width, canvas.height);
         } else {
           model.offscreen_context.drawImage(kept, 0, 0);
@@ -213,32 +220,45 @@ FRAME_JS = """
       });
     }
   };
+  // ipympl's way for a frame of ours: its <img>, drawn when loaded into canvases of the
+  // frame's size (of a lower ratio, or ipympl's own).
+  const byImageFitted = function (message, buffers, bytes) {
+    this.interpImageSize = pngSize(bytes);
+    if (this.image && !this.interpOnload) {
+      const onload = this.interpOnload = this.image.onload;
+      this.image.onload = (...args) => {
+        fitCanvases(this, this.interpImageSize);
+        return onload.apply(this.image, args);
+      };
+    }
+    return byImage.call(this, message, buffers);
+  };
   proto.handle_binary = function (message, buffers) {
     const loading = this.image && this.image.src && !this.image.complete;
     const whole = (this.get('_dom_classes') || []).includes('WHOLE_FRAMES');
     const frame = this.interpSent = (this.interpSent || 0) + 1;
     const decodes = typeof ImageDecoder === 'function' || typeof createImageBitmap === 'function';
-    if (!decodes || !whole || this.disabled || loading) {
-      this.interpShown = frame;  // any frame still decoding is older: dropped
-      keep(this, null);
-      fitCanvases(this, null);
-      return byImage.call(this, message, buffers);
-    }
-    if (!this.interpToldKernel) {  // frames of a lower ratio may come: they are scaled here
-      this.interpToldKernel = true;
-      this.send_message('interp_scaled_frames');
-    }
+    if (!whole) return byImage.call(this, message, buffers);  // another figure's frames
     const data = buffers[0];
     const bytes = ArrayBuffer.isView(data)
       ? new Uint8Array(data.buffer, data.byteOffset, data.byteLength) : new Uint8Array(data);
+    if (!decodes || this.disabled || loading) {
+      this.interpShown = frame;  // any frame still decoding is older: dropped
+      keep(this, null);
+      return byImageFitted.call(this, message, buffers, bytes);
+    }
     this.waiting_for_image = false;
     decode(bytes).then((picture) => {
+      if (!this.interpToldKernel) {  // frames of a lower ratio may come: they are scaled here
+        this.interpToldKernel = true;
+        this.send_message('interp_scaled_frames');
+      }
       if (frame < (this.interpShown || 0) || this.disabled) {
         picture.close();
         return;
       }
       this.interpShown = frame;
-      fitCanvases(this, picture);
+      fitCanvases(this, sizeOf(picture));
       const canvas = this.offscreen_canvas;
       if (this.get('_image_mode') === 'full') {
         this.offscreen_context.clearRect(0, 0, canvas.width, canvas.height);
@@ -251,8 +271,7 @@ FRAME_JS = """
       if (frame < (this.interpShown || 0)) return;
       this.interpShown = frame;
       keep(this, null);
-      fitCanvases(this, null);
-      byImage.call(this, message, buffers);
+      byImageFitted.call(this, message, buffers, bytes);
     });
   };
 })();
@@ -604,6 +623,11 @@ class Coalescer:
         self.following = False
         self.requests = self.draws = 0
 
+    @property
+    def pending(self) -> bool:
+        """Whether a draw is scheduled and has not run yet."""
+        return self._scheduled
+
     def request(self) -> None:
         """The state changed: draw it, soon."""
         self.requests += 1
@@ -635,7 +659,9 @@ class Coalescer:
 def drawn_at(canvas: FigureCanvasAgg, ratio: float) -> Iterator[None]:
     """Inside, ``canvas`` draws its figure at device pixel ratio ``ratio``, into a renderer
     kept for that ratio; afterwards the ratio, the renderer and the figure's staleness are as
-    before. Outside, nothing is changed: pyplot's and ipympl's own draws keep the screen's.
+    before, so pyplot's and ipympl's own draws keep the screen's. (Artists that keep places in
+    pixels from their last draw, as a legend keeps its box's, keep this draw's: see
+    ``Blitter._draw_legend``.)
 
     Examples
     --------
@@ -821,5 +847,16 @@ def cheap_frames(canvas: object) -> None:
         canvas.handle_interp_scaled_frames = lambda event: setattr(
             canvas, "interp_scaled_frames", True
         )
+        # Every message of the page (a mouse move, a size, a pixel ratio) is taken in holding
+        # DRAW_LOCK, whichever thread it comes on: a live frame changes the canvas's pixel ratio
+        # while it is drawn (drawn_at), and a mouse event's place in the figure, or a new
+        # ratio, must be read and set at the screen's.
+        handle_event = canvas.handle_event
+
+        def handle_event_in_turn(event: dict) -> object:
+            with DRAW_LOCK:
+                return handle_event(event)
+
+        canvas.handle_event = handle_event_in_turn
         if hasattr(canvas, "add_class"):
             canvas.add_class(WHOLE_FRAMES)
