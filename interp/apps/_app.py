@@ -216,14 +216,13 @@ class App:
         again at the screen's ratio once the changes stop.
         """
         with DRAW_LOCK:  # a slider's thread, ipympl's and a cell's take turns
-            ratio = self._frame_ratio(following)
             # Stale before the update: a cell changed the figure itself (a label, say), which
             # the blit's background does not know; then pyplot's full redraw must still come.
             changed_outside = self.figure.stale
             with styled(**self._style):  # titles set now must look like those set at the start
                 self.plot.update(**self.values)
             if self.live:
-                self._draw_frame(ratio)  # at once: no round trip through the browser first
+                self._draw_frame(following)  # at once: no round trip through the browser
                 self.figure.stale = changed_outside
             elif self._handle is not None:
                 self._handle.update(self.figure, metadata=self._image_metadata())
@@ -239,7 +238,7 @@ class App:
         event loop (which draws the sharp frame afterwards)."""
         canvas = self.figure.canvas
         shown = canvas.device_pixel_ratio
-        if not (following and self.live and shown > LIVE_RATIO):
+        if not (following and shown > LIVE_RATIO):
             return shown
         if not getattr(canvas, "interp_scaled_frames", False):
             return shown
@@ -249,10 +248,10 @@ class App:
             return shown
         return LIVE_RATIO
 
-    def _draw_frame(self, ratio: float) -> None:
-        """Send a frame of the figure as it is, drawn at device pixel ratio ``ratio``; one
-        below the screen's is followed by a sharp one once no change has come for
-        :data:`SHARPEN`."""
+    def _draw_frame(self, following: bool) -> None:
+        """Send a frame of the live figure as it is, drawn at :meth:`_frame_ratio`; one below
+        the screen's is followed by a sharp one once no change has come for :data:`SHARPEN`."""
+        ratio = self._frame_ratio(following)
         if self._sharpen_timer is not None:
             self._sharpen_timer.cancel()
             self._sharpen_timer = None

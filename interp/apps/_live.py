@@ -827,13 +827,17 @@ def take_turns(canvas: object) -> None:
     >>> take_turns(figure.canvas)
     >>> figure.canvas.draw()
     """
-    draw = canvas.draw
+    canvas.draw = _in_turn(canvas.draw)
 
-    def draw_in_turn(*args: object, **kwargs: object) -> object:
+
+def _in_turn(method: Callable) -> Callable:
+    """``method``, holding :data:`DRAW_LOCK` while it runs."""
+
+    def in_turn(*args: object, **kwargs: object) -> object:
         with DRAW_LOCK:
-            return draw(*args, **kwargs)
+            return method(*args, **kwargs)
 
-    canvas.draw = draw_in_turn
+    return in_turn
 
 
 def cheap_frames(canvas: object) -> None:
@@ -851,12 +855,6 @@ def cheap_frames(canvas: object) -> None:
         # DRAW_LOCK, whichever thread it comes on: a live frame changes the canvas's pixel ratio
         # while it is drawn (drawn_at), and a mouse event's place in the figure, or a new
         # ratio, must be read and set at the screen's.
-        handle_event = canvas.handle_event
-
-        def handle_event_in_turn(event: dict) -> object:
-            with DRAW_LOCK:
-                return handle_event(event)
-
-        canvas.handle_event = handle_event_in_turn
+        canvas.handle_event = _in_turn(canvas.handle_event)
         if hasattr(canvas, "add_class"):
             canvas.add_class(WHOLE_FRAMES)
