@@ -107,8 +107,12 @@ lint: $(STAMP)
 	$(BIN)/ruff check --no-cache interp tests conftest.py site
 	$(BIN)/ruff format --no-cache --check interp tests conftest.py site
 
+# The suite runs in one process per CPU (pytest-xdist; TEST_JOBS=0 runs it in this one), a test
+# file at a time per process, so that each file's JupyterLab, Voila or Chromium starts once.
+TEST_JOBS ?= auto
+
 test: lint $(NBGRADER_DONE) $(NPM_DONE)
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n $(TEST_JOBS) --dist loadfile
 
 bench: $(VENV)/.installed-gl
 	$(BIN)/python -m interp.bench
