@@ -84,11 +84,12 @@ def ground_truth(camera: Camera, width: int, height: int, size: float = LESSON_S
 
     x = 2 * (np.arange(width) + 0.5) / width - 1
     y = 1 - 2 * (np.arange(height) + 0.5) / height
-    x, y = np.meshgrid(x, y)
+    ndc = np.ones((height, width, 4))  # each pixel centre's (x, y, z, 1), z set below
+    ndc[..., 0], ndc[..., 1] = np.meshgrid(x, y)
     ends = []
     for z in (-1.0, 1.0):  # the near and far ends of each pixel's ray, in world space
-        ndc = np.stack([x, y, np.full_like(x, z), np.ones_like(x)], axis=-1)
-        world = ndc @ to_world.T
+        ndc[..., 2] = z
+        world = (ndc.reshape(-1, 4) @ to_world.T).reshape(ndc.shape)  # one product, not a row each
         ends.append(world[..., :3] / world[..., 3:])
     start, stop = ends
     rise = stop[..., 1] - start[..., 1]
@@ -97,8 +98,8 @@ def ground_truth(camera: Camera, width: int, height: int, size: float = LESSON_S
     hit = start + k[..., None] * (stop - start)
     half = size / 2
     seen = (k >= 0) & (k <= 1) & (np.abs(hit[..., 0]) <= half) & (np.abs(hit[..., 2]) <= half)
-    view = np.concatenate([hit, np.ones_like(k)[..., None]], axis=-1) @ camera.view.T
-    w = np.where(seen, -view[..., 2], np.nan)
+    view_z = hit @ camera.view[2, :3] + camera.view[2, 3]  # the hit point's z in view space
+    w = np.where(seen, -view_z, np.nan)
     u = np.where(seen, hit[..., 0] / size + 0.5, np.nan)
     v = np.where(seen, 0.5 - hit[..., 2] / size, np.nan)
     ndc_z = np.full_like(w, np.nan)
