@@ -89,7 +89,7 @@ def ground_truth(camera: Camera, width: int, height: int, size: float = LESSON_S
     ends = []
     for z in (-1.0, 1.0):  # the near and far ends of each pixel's ray, in world space
         ndc[..., 2] = z
-        world = (ndc.reshape(-1, 4) @ to_world.T).reshape(ndc.shape)  # one product, not a row each
+        world = ndc @ to_world.T
         ends.append(world[..., :3] / world[..., 3:])
     start, stop = ends
     rise = stop[..., 1] - start[..., 1]

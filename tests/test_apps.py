@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import time
+
 import ipywidgets as widgets
 import numpy as np
 import pytest
@@ -399,3 +401,38 @@ def test_extreme_cameras_show_clean_figures(name, camera):
     app.set(**camera)
     for array in shown_arrays(app.figure):
         assert np.all(np.isfinite(array))
+
+
+@pytest.mark.parametrize("name", sorted(apps.ALL))
+def test_a_step_computes_on_one_thread(name):
+    """Each app's steps run on the thread that asks for them, without BLAS's helper threads: on
+    the course's 2-core machine, shared with the browser that shows the frames, OpenBLAS's
+    threads (which spin for a while after each product they share) took the CPU the page
+    needed. One (43200 x 4) @ (4 x 4) product in lesson 7's ray cast cost its drag half its
+    pictures a second in Chromium (22.4 -> 11.9), with the kernel alone a little faster."""
+    app = apps.ALL[name]()
+    steps = [  # each slider across its range (each choice of an app without sliders)
+        {key: value}
+        for key, control in app.controls.items()
+        if hasattr(control, "min")
+        for value in slider_values(control, 6)
+    ] or [{key: value} for key, control in app.controls.items() for value in control.options]
+    app.set(**steps[0])  # made and drawn once before timing
+    process, thread = time.process_time(), time.thread_time()
+    for values in steps:
+        app.set(**values)
+    here = time.thread_time() - thread
+    elsewhere = time.process_time() - process - here
+    assert elsewhere <= 0.05 * here + 0.005, (
+        f"{name}: {1000 * elsewhere:.0f} ms of CPU on other threads, {1000 * here:.0f} ms on this"
+    )
+
+
+def slider_values(control: widgets.Widget, count: int) -> list:
+    """``count`` values spread over a slider's range, as it takes them."""
+    spread = np.linspace(control.min, control.max, count)
+    if isinstance(control, widgets.FloatLogSlider):
+        return [float(10.0**e) for e in spread]
+    if isinstance(control, widgets.IntSlider):
+        return sorted({round(float(v)) for v in spread})
+    return [float(v) for v in spread]
