@@ -42,6 +42,7 @@ from browser import (
     figure_of,
     is_blank,
     kernel_interp,
+    kernel_run,
     kernel_truth,
     lessons,
     mismatch,
@@ -487,6 +488,10 @@ def test_a_hidpi_drag_shows_live_frames_at_ratio_1_then_the_sharp_figure(
         assert set(widths) == {sharp, *live}, widths
         assert widths[-1] == sharp, f"the last picture is not sharp: {widths}"
         assert canvas.evaluate("c => c.width") == sharp
+        # Letting go of the slider while a live frame showed, the page told the kernel (which
+        # then draws the slider's last value sharp at once: test_live.py shows the frames).
+        let_go = kernel_run(page, f"print(Out[{counts[name]}]._released_at > -1e300)")
+        assert let_go.strip() == "True", "the page did not say the slider was let go"
         unfilled = [d for d in draws if abs(d["drawn"] - d["canvas"]) > 1]
         assert not unfilled, f"pictures that do not fill their canvas: {unfilled[:5]}"
         assert_is_the_apps_figure(page, canvas, counts[name], "after the HiDPI drags")

@@ -1031,3 +1031,41 @@ def test_a_page_that_appears_gets_sharp_frames_until_it_says_it_scales_them():
     _drag(app, "w2", [2.0, 2.5, 3.0, 3.5], gap=0.005)
     width, height = canvas.get_width_height()
     assert {frame.shape[:2] for _, frame in frames} == {(2 * height, 2 * width)}
+
+
+def test_a_control_let_go_draws_its_last_value_sharp_at_once(monkeypatch):
+    """The page says when a control is let go (a mouse button or a key up) while the figure
+    shows a live frame of a lower ratio. The control's last value, which ipywidgets often sends
+    after that message, is then drawn at the screen's ratio at once: no live frame of it, no
+    wait for the sharp one. A drag after that is live again."""
+    from interp.apps import _app
+
+    app, frames = _ipympl_app(apps.st_mapping, ratio=2, scales=True)
+    canvas = app.figure.canvas
+    app.coalescer._idle = 0.5  # a series, however slow the machine (see the test above)
+    monkeypatch.setattr(_app, "SHARPEN", 0.5)
+    width, height = canvas.get_width_height()
+    sharp, live = (2 * height, 2 * width), (height, width)
+
+    async def drag_then_let_go():
+        for value in (3.0, 3.5, 4.0, 4.5):
+            app.controls["w2"].value = value
+            await asyncio.sleep(0.005)
+        await asyncio.sleep(0.05)  # the live frames are drawn; the sharp one is not due yet
+        # The page's message, through ipympl's handler (no "unhandled message") and the app's.
+        canvas._handle_custom_msg({"type": "interp_released"}, [])
+        released = len(frames)
+        app.controls["w2"].value = 5.0  # the last value, sent after the release
+        await asyncio.sleep(1.0)
+        return released
+
+    released = asyncio.run(drag_then_let_go())
+    sizes = [frame.shape[:2] for _, frame in frames]
+    assert sizes[0] == sharp and set(sizes[1:released]) == {live}, sizes
+    assert sizes[released:] == [sharp], sizes  # one frame after the release: sharp, at once
+    assert frames[-1][0]["w2"] == 5.0
+    np.testing.assert_array_equal(frames[-1][1], _drawn_afresh(apps.st_mapping, frames[-1][0], 2))
+    monkeypatch.setattr(_app, "RELEASED", 0.0)  # long after the release: a drag is live again
+    first = len(frames)
+    _drag(app, "w2", [4.0, 3.5, 3.0], gap=0.005, settle=1.0)
+    assert live in [frame.shape[:2] for _, frame in frames[first:]]

@@ -15,7 +15,9 @@ layout of its own: one control per parameter, with the parameter's range and lab
 from __future__ import annotations
 
 import asyncio
+import math
 import os
+import time
 from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
 from html import escape
@@ -30,6 +32,7 @@ from interp.apps._live import (
     DRAW_LOCK,
     FRAME_JS,
     LIVE_RATIO,
+    RELEASED,
     SHARPEN,
     Blitter,
     Coalescer,
@@ -183,6 +186,7 @@ class App:
         #: Draws the live frames of a HiDPI screen, at :data:`LIVE_RATIO` (made when needed).
         self.live_blitter: Blitter | None = None
         self._sharpen_timer: asyncio.TimerHandle | None = None
+        self._released_at = -math.inf  # when the page last said a control was let go
         self.coalescer = Coalescer(lambda: self.refresh(following=self.coalescer.following))
         if self.live:
             cheap_frames(self.figure.canvas)
@@ -235,12 +239,15 @@ class App:
         """The device pixel ratio to draw the next frame at: the screen's, or
         :data:`LIVE_RATIO` for a change that follows another on a HiDPI screen whose page
         scales frames up (it says so once it has decoded a frame of ours), inside a running
-        event loop (which draws the sharp frame afterwards)."""
+        event loop (which draws the sharp frame afterwards), unless the page has just said
+        that the control was let go (:data:`RELEASED`)."""
         canvas = self.figure.canvas
         shown = canvas.device_pixel_ratio
         if not (following and shown > LIVE_RATIO):
             return shown
         if not getattr(canvas, "interp_scaled_frames", False):
+            return shown
+        if time.monotonic() - self._released_at <= RELEASED:
             return shown
         try:
             asyncio.get_running_loop()
@@ -299,11 +306,14 @@ class App:
             self._readout_handle.update(HTML(html))
 
     def _canvas_message(self, canvas: object, content: dict, buffers: list) -> None:
-        """After ipympl's own handler: send a fresh full frame to a view that just appeared.
+        """After ipympl's own handler: send a fresh full frame to a view that just appeared,
+        and note when a control was let go.
 
         A page that appears may not scale frames of a lower ratio up (a page reloaded does not
         run the apps' page script again): until it says it does, frames are sharp.
         """
+        if content.get("type") == "interp_released":
+            self._released_at = time.monotonic()
         if content.get("type") == "initialized":
             with DRAW_LOCK:
                 canvas.interp_scaled_frames = False

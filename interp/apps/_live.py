@@ -99,6 +99,12 @@ LIVE_RATIO = 1.0
 #: busy two-core machine, where a slider's next message came later than that: at ratio 2 the
 #: picture floor's drag fell back from 18 to 12-13 pictures a second.
 SHARPEN = IDLE
+#: How long after the page says a control was let go (a mouse button or a key up, while its
+#: figure shows a live frame of a lower ratio) a step is drawn at the screen's ratio at once
+#: (seconds): the control's last value often comes after that message, as ipywidgets holds a
+#: value back until the kernel has taken in the one before. Drawn sharp, it needs no live
+#: frame and no wait of :data:`SHARPEN`.
+RELEASED = 0.25
 #: Held while an app changes or draws its figure, on whichever thread: matplotlib is not
 #: thread-safe, and the style sheet is applied through the global rcParams.
 DRAW_LOCK = threading.RLock()
@@ -185,8 +191,22 @@ FRAME_JS = """
   // until a frame of the page's own ratio comes. (Frames of the page's ratio may be a pixel
   // wider than its canvas: ipympl rounds the figure's size down.)
   const isLow = (model, size) => !!size && size[0] < model.size[0] * model.ratio - 2;
+  // The figures that show such a frame now. When a control is let go (a mouse button or a key
+  // up, anywhere on the page) each tells the kernel, which then draws the control's last
+  // value at the page's ratio at once (RELEASED in interp.apps._live).
+  const showingLow = new Set();
+  const released = () => showingLow.forEach((model) => {
+    try {
+      model.send_message('interp_released');
+    } catch (error) {  // a figure closed since
+      showingLow.delete(model);
+    }
+  });
+  window.addEventListener('pointerup', released, true);
+  window.addEventListener('keyup', released, true);
   const fitCanvases = (model, size) => {
     if (isLow(model, size)) {
+      showingLow.add(model);
       const [width, height] = size;
       const fit = (canvas) => {  // setting a canvas's size clears it: only where it differs
         if (canvas.width !== width || canvas.height !== height) {
@@ -199,6 +219,7 @@ FRAME_JS = """
       model.interpLow = true;
     } else if (model.interpLow) {  // back to ipympl's own sizes
       model.interpLow = false;
+      showingLow.delete(model);
       model.resize_canvas();
       model._for_each_view((view) => view.resize_and_update_canvas(model.size));
     }
@@ -851,6 +872,9 @@ def cheap_frames(canvas: object) -> None:
         canvas.handle_interp_scaled_frames = lambda event: setattr(
             canvas, "interp_scaled_frames", True
         )
+        # The page's message that a control was let go (see RELEASED), which the app reads in
+        # its own handler of the canvas's messages (App._canvas_message).
+        canvas.handle_interp_released = lambda event: None
         # Every message of the page (a mouse move, a size, a pixel ratio) is taken in holding
         # DRAW_LOCK, whichever thread it comes on: a live frame changes the canvas's pixel ratio
         # while it is drawn (drawn_at), and a mouse event's place in the figure, or a new
