@@ -107,9 +107,10 @@ lint: $(STAMP)
 	$(BIN)/ruff check --no-cache interp tests conftest.py site
 	$(BIN)/ruff format --no-cache --check interp tests conftest.py site
 
-# The suite runs in one process per CPU (pytest-xdist; TEST_JOBS=0 runs it in this one), a test
-# file at a time per process, so that each file's JupyterLab, Voila or Chromium starts once.
-TEST_JOBS ?= auto
+# The suite runs in one process per CPU this process may use, at most 4 (pytest-xdist; each
+# browser test file starts its own JupyterLab and Chromium), a test file at a time per process,
+# so that each file's servers start once. TEST_JOBS=0 runs it in this one process.
+TEST_JOBS ?= $(shell $(PYTHON) -c 'import os; n = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count(); print(max(1, min(4, n or 1)))')
 
 test: lint $(NBGRADER_DONE) $(NPM_DONE)
 	$(BIN)/python -m pytest -n $(TEST_JOBS) --dist loadfile

@@ -1033,7 +1033,7 @@ def test_a_page_that_appears_gets_sharp_frames_until_it_says_it_scales_them():
     assert {frame.shape[:2] for _, frame in frames} == {(2 * height, 2 * width)}
 
 
-def test_a_control_let_go_draws_its_last_value_sharp_at_once(monkeypatch):
+def test_a_control_let_go_draws_its_last_value_sharp_at_once(monkeypatch, caplog):
     """The page says when a control is let go (a mouse button or a key up) while the figure
     shows a live frame of a lower ratio. The control's last value, which ipywidgets often sends
     after that message, is then drawn at the screen's ratio at once: no live frame of it, no
@@ -1044,6 +1044,7 @@ def test_a_control_let_go_draws_its_last_value_sharp_at_once(monkeypatch):
     canvas = app.figure.canvas
     app.coalescer._idle = 0.5  # a series, however slow the machine (see the test above)
     monkeypatch.setattr(_app, "SHARPEN", 0.5)
+    monkeypatch.setattr(_app, "RELEASED", 5.0)
     width, height = canvas.get_width_height()
     sharp, live = (2 * height, 2 * width), (height, width)
 
@@ -1065,7 +1066,9 @@ def test_a_control_let_go_draws_its_last_value_sharp_at_once(monkeypatch):
     assert sizes[released:] == [sharp], sizes  # one frame after the release: sharp, at once
     assert frames[-1][0]["w2"] == 5.0
     np.testing.assert_array_equal(frames[-1][1], _drawn_afresh(apps.st_mapping, frames[-1][0], 2))
-    monkeypatch.setattr(_app, "RELEASED", 0.0)  # long after the release: a drag is live again
+    assert not [r for r in caplog.records if "Unhandled message" in r.getMessage()]
+    monkeypatch.setattr(_app, "RELEASED", 0.2)
+    time.sleep(0.3)  # longer than RELEASED after the release: a drag is live again
     first = len(frames)
     _drag(app, "w2", [4.0, 3.5, 3.0], gap=0.005, settle=1.0)
     assert live in [frame.shape[:2] for _, frame in frames[first:]]

@@ -99,8 +99,8 @@ LIVE_RATIO = 1.0
 #: busy two-core machine, where a slider's next message came later than that: at ratio 2 the
 #: picture floor's drag fell back from 18 to 12-13 pictures a second.
 SHARPEN = IDLE
-#: How long after the page says a control was let go (a mouse button or a key up, while its
-#: figure shows a live frame of a lower ratio) a step is drawn at the screen's ratio at once
+#: How long after the page says a control was let go (a mouse button or a key up, within a
+#: second of a frame of its figure on a HiDPI screen) a step is drawn at the screen's ratio at once
 #: (seconds): the control's last value often comes after that message, as ipywidgets holds a
 #: value back until the kernel has taken in the one before. Drawn sharp, it needs no live
 #: frame and no wait of :data:`SHARPEN`.
@@ -114,7 +114,7 @@ DRAW_LOCK = threading.RLock()
 WHOLE_FRAMES = "interp-whole-frames"
 
 #: Run in the page (JupyterLab, Voilà) once an app is shown; it changes how ipympl's view model
-#: (0.9 - 0.12 at least) takes in a frame, in two ways, on the browser's main thread:
+#: (0.9 - 0.12 at least) takes in a frame, in three ways, on the browser's main thread:
 #:
 #: - ipympl loads each frame's PNG as an ``<img>`` from a blob URL (a fetch through the
 #:   browser process) and decodes it when it draws it, on the main thread: 6-11 ms from the
@@ -133,6 +133,10 @@ WHOLE_FRAMES = "interp-whole-frames"
 #:   ``offscreen_canvas.toDataURL()``: 13 ms for an 820 x 474 figure in Chromium, for a data
 #:   URL read only when the notebook is saved (the figure's static picture). This waits until
 #:   frames stop coming for 300 ms, and then encodes the picture on show.
+#: - On a HiDPI screen, a frame of a lower ratio (:data:`LIVE_RATIO`) is drawn into canvases of
+#:   its own size, which the page scales up to the figure's place; after it says it does so
+#:   (``interp_scaled_frames``), a mouse button or key let go anywhere on the page within a
+#:   second of a frame's arrival sends ``interp_released`` (:data:`RELEASED`).
 #:
 #: It reaches ipympl's model class through the page's module federation
 #: (``window._JUPYTERLAB``); where that is missing, or ipympl's ``handle_binary`` is not the
@@ -191,22 +195,32 @@ FRAME_JS = """
   // until a frame of the page's own ratio comes. (Frames of the page's ratio may be a pixel
   // wider than its canvas: ipympl rounds the figure's size down.)
   const isLow = (model, size) => !!size && size[0] < model.size[0] * model.ratio - 2;
-  // The figures that show such a frame now. When a control is let go (a mouse button or a key
-  // up, anywhere on the page) each tells the kernel, which then draws the control's last
-  // value at the page's ratio at once (RELEASED in interp.apps._live).
-  const showingLow = new Set();
-  const released = () => showingLow.forEach((model) => {
-    try {
-      model.send_message('interp_released');
-    } catch (error) {  // a figure closed since
-      showingLow.delete(model);
+  // The figures that had a frame in the last second on a screen of ratio above 1, after the
+  // page said it scales frames up. When a control is let go (a mouse button or a key up,
+  // anywhere on the page) each tells the kernel, which then draws the control's last value at
+  // the page's ratio at once (RELEASED in interp.apps._live). Figures closed since (a kernel
+  // restarted, say) and figures without a frame for a second are dropped.
+  const recent = new Set();
+  const arrived = (model) => {
+    if (!(model.ratio > 1) || !model.interpToldKernel) return;
+    if (!model.interpWatched) {
+      model.interpWatched = true;
+      model.once('destroy', () => recent.delete(model));
     }
-  });
+    model.interpArrived = performance.now();
+    recent.add(model);
+  };
+  const released = () => {
+    const now = performance.now();
+    recent.forEach((model) => {
+      if (!model.comm_live || now - model.interpArrived > 1000) recent.delete(model);
+      else model.send_message('interp_released');
+    });
+  };
   window.addEventListener('pointerup', released, true);
   window.addEventListener('keyup', released, true);
   const fitCanvases = (model, size) => {
     if (isLow(model, size)) {
-      showingLow.add(model);
       const [width, height] = size;
       const fit = (canvas) => {  // setting a canvas's size clears it: only where it differs
         if (canvas.width !== width || canvas.height !== height) {
@@ -219,7 +233,6 @@ FRAME_JS = """
       model.interpLow = true;
     } else if (model.interpLow) {  // back to ipympl's own sizes
       model.interpLow = false;
-      showingLow.delete(model);
       model.resize_canvas();
       model._for_each_view((view) => view.resize_and_update_canvas(model.size));
     }
@@ -263,6 +276,7 @@ FRAME_JS = """
     const data = buffers[0];
     const bytes = ArrayBuffer.isView(data)
       ? new Uint8Array(data.buffer, data.byteOffset, data.byteLength) : new Uint8Array(data);
+    arrived(this);
     if (!decodes || this.disabled || loading) {
       this.interpShown = frame;  // any frame still decoding is older: dropped
       keep(this, null);
