@@ -4,6 +4,7 @@ mode; driven in Debian's Chromium."""
 
 from __future__ import annotations
 
+import http.client
 import importlib.util
 import io
 import os
@@ -110,7 +111,6 @@ def slides_server(tmp_path):
             pytest.fail("CI must have site/node_modules (make test runs npm ci --prefix site)")
         pytest.skip("no site/node_modules: run `npm ci --prefix site` (make test does)")
     lessons = site_build().build_slides(tmp_path / "slides")
-    port = free_port()
     env = {
         **os.environ,
         "INTERP_PRESENTATION": "1",
@@ -119,16 +119,24 @@ def slides_server(tmp_path):
         "JUPYTER_RUNTIME_DIR": str(tmp_path / "runtime"),
     }
     env.pop("MPLBACKEND", None)
-    command = [
-        sys.executable, "-m", "interp.classroom", "--template=interp-reveal", "--no-browser",
-        f"--port={port}", "--Voila.ip=127.0.0.1", str(lessons),
-    ]  # fmt: skip
     log = tmp_path / "voila.log"
-    with log.open("w") as out:
-        process = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT)
-    base = f"http://127.0.0.1:{port}"
+    for _attempt in range(3):  # a free port can be taken (by another test's kernel, say) first
+        port = free_port()
+        command = [
+            sys.executable, "-m", "interp.classroom", "--template=interp-reveal", "--no-browser",
+            f"--port={port}", "--Voila.ip=127.0.0.1", "--Voila.port_retries=0", str(lessons),
+        ]  # fmt: skip
+        with log.open("w") as out:
+            process = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT)
+        base = f"http://127.0.0.1:{port}"
+        try:
+            wait_for_server(base + "/", process, log)
+            break
+        except (RuntimeError, http.client.HTTPException):  # the port was taken: another
+            process.kill()
+    else:
+        raise AssertionError(f"Voilà did not start:\n{log.read_text()[-2000:]}")
     try:
-        wait_for_server(base + "/", process, log)
         yield base
     finally:
         stop(process)
