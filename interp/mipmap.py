@@ -40,7 +40,7 @@ quad        : 2 x 2 pixels that a GPU shades together; its derivatives are diffe
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -133,6 +133,25 @@ def mipmap(level0: object) -> list[np.ndarray]:
         n = level.shape[0] // 2
         level = level.reshape(n, 2, n, 2).mean(axis=(1, 3))
         levels.append(level)
+    return levels
+
+
+@lru_cache(maxsize=16)
+def _checker_pyramid(frequency: int, size: int = TEXTURE_SIZE) -> tuple[np.ndarray, ...]:
+    """:func:`mipmap` of :func:`checker_texture`, made once per ``(frequency, size)``: a slider
+    that moves the camera leaves the texture as it was. The levels are read-only, as they are
+    shared.
+
+    Examples
+    --------
+    >>> [level.shape for level in _checker_pyramid(2, 4)]
+    [(4, 4), (2, 2), (1, 1)]
+    >>> _checker_pyramid(2, 4) is _checker_pyramid(2, 4)
+    True
+    """
+    levels = tuple(mipmap(checker_texture(frequency, size)))
+    for level in levels:
+        level.setflags(write=False)
     return levels
 
 
@@ -588,7 +607,7 @@ def filtering_views(
         uv=uv,
         derivatives=derivatives,
         lod=lod,
-        levels=mipmap(checker_texture(frequency, size)),
+        levels=list(_checker_pyramid(frequency, size)),
         size=size,
         frequency=frequency,
         mode=mode,
