@@ -492,8 +492,8 @@ def test_a_hidpi_drag_shows_live_frames_at_ratio_1_then_the_sharp_figure(
         assert not unfilled, f"pictures that do not fill their canvas: {unfilled[:5]}"
         # Letting go of the slider after a drag of half a second, the page tells the kernel
         # (which then draws the slider's last value sharp at once: test_live.py shows that).
-        app = f"Out[{counts[name]}]"
-        kernel_run(page, f"{app}._released_at = float('-inf')")
+        app = f"Out[{counts[name]}].figure.canvas"
+        kernel_run(page, f"{app}.interp_released_at = float('-inf')")
         handle = slider_for(root, figure_of(name).PARAMS[CONTROL[name]].label)
         box = steady_box(handle.locator(".noUi-handle"))
         x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
@@ -504,7 +504,7 @@ def test_a_hidpi_drag_shows_live_frames_at_ratio_1_then_the_sharp_figure(
             page.wait_for_timeout(40)
         page.mouse.up()
         wait_idle(page, quiet_ms=800, timeout=60)
-        let_go = kernel_run(page, f"print({app}._released_at > -1e300)")
+        let_go = kernel_run(page, f"print({app}.interp_released_at > -1e300)")
         assert let_go.strip() == "True", "the page did not say the slider was let go"
         assert canvas.evaluate("c => c.width") == sharp
         assert_is_the_apps_figure(page, canvas, counts[name], "after the HiDPI drags")

@@ -186,7 +186,6 @@ class App:
         #: Draws the live frames of a HiDPI screen, at :data:`LIVE_RATIO` (made when needed).
         self.live_blitter: Blitter | None = None
         self._sharpen_timer: asyncio.TimerHandle | None = None
-        self._released_at = -math.inf  # when the page last said a control was let go
         self.coalescer = Coalescer(lambda: self.refresh(following=self.coalescer.following))
         if self.live:
             cheap_frames(self.figure.canvas)
@@ -247,7 +246,7 @@ class App:
             return shown
         if not getattr(canvas, "interp_scaled_frames", False):
             return shown
-        if time.monotonic() - self._released_at <= RELEASED:
+        if time.monotonic() - getattr(canvas, "interp_released_at", -math.inf) <= RELEASED:
             return shown
         try:
             asyncio.get_running_loop()
@@ -306,14 +305,11 @@ class App:
             self._readout_handle.update(HTML(html))
 
     def _canvas_message(self, canvas: object, content: dict, buffers: list) -> None:
-        """After ipympl's own handler: send a fresh full frame to a view that just appeared,
-        and note when a control was let go.
+        """After ipympl's own handler: send a fresh full frame to a view that just appeared.
 
         A page that appears may not scale frames of a lower ratio up (a page reloaded does not
         run the apps' page script again): until it says it does, frames are sharp.
         """
-        if content.get("type") == "interp_released":
-            self._released_at = time.monotonic()
         if content.get("type") == "initialized":
             with DRAW_LOCK:
                 canvas.interp_scaled_frames = False

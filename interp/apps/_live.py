@@ -886,9 +886,11 @@ def cheap_frames(canvas: object) -> None:
         canvas.handle_interp_scaled_frames = lambda event: setattr(
             canvas, "interp_scaled_frames", True
         )
-        # The page's message that a control was let go (see RELEASED), which the app reads in
-        # its own handler of the canvas's messages (App._canvas_message).
-        canvas.handle_interp_released = lambda event: None
+        # The page's message that a control was let go: when (see RELEASED).
+        canvas.interp_released_at = -math.inf
+        canvas.handle_interp_released = lambda event: setattr(
+            canvas, "interp_released_at", time.monotonic()
+        )
         # Every message of the page (a mouse move, a size, a pixel ratio) is taken in holding
         # DRAW_LOCK, whichever thread it comes on: a live frame changes the canvas's pixel ratio
         # while it is drawn (drawn_at), and a mouse event's place in the figure, or a new
