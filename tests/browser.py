@@ -16,7 +16,7 @@ import subprocess
 import sys
 import time
 import urllib.request
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import numpy as np
@@ -54,6 +54,27 @@ def _wait_for(url: str, process: subprocess.Popen, log: Path, seconds: float = 9
                     return
         time.sleep(0.3)
     raise RuntimeError(f"server did not answer {url} in {seconds} s:\n{log.read_text()[-3000:]}")
+
+
+def start_on_free_port(
+    command_for: Callable[[int], list[str]], log: Path, env: dict, attempts: int = 3
+) -> tuple[subprocess.Popen, int]:
+    """Start the server ``command_for(port)`` on a free port (its own port retries off), and
+    again on another if the port was taken before it bound it (by a kernel, say): (the
+    process, its port), once it answers at ``http://127.0.0.1:{port}/``."""
+    for _attempt in range(attempts):
+        port = free_port()
+        with log.open("w") as out:
+            process = subprocess.Popen(
+                command_for(port), env=env, stdout=out, stderr=subprocess.STDOUT
+            )
+        url = f"http://127.0.0.1:{port}/"
+        try:
+            _wait_for(url, process, log)
+            return process, port
+        except (RuntimeError, http.client.HTTPException):  # the port was taken: another
+            process.kill()
+    raise AssertionError(f"the server did not start:\n{log.read_text()[-2000:]}")
 
 
 @contextlib.contextmanager

@@ -6,12 +6,10 @@ refresh the README's screenshots in docs/screenshots/.
 
 from __future__ import annotations
 
-import http.client
 import io
 import os
 import re
 import shutil
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -22,14 +20,13 @@ from browser import (
     ARTIFACTS,
     ROOT,
     SCREENSHOTS,
-    free_port,
     server,
     server_nodelay,
+    start_on_free_port,
     steady_box,
     stop,
     sync_api,
 )
-from browser import _wait_for as wait_for_server
 from matplotlib.figure import Figure
 from PIL import Image
 
@@ -298,23 +295,16 @@ def test_classroom_server_culls_closed_pages_and_caps_kernels(tmp_path, browser)
     }
     env.pop("MPLBACKEND", None)
     log = tmp_path / "voila.log"
-    for _attempt in range(3):  # a free port can be taken (e.g. by a kernel) before Voilà binds it
-        port = free_port()
-        command = [
+
+    def command(port: int) -> list[str]:
+        return [
             sys.executable, "-m", "interp.classroom", "--idle", "3", "--interval", "1",
             "--max-kernels", "2", "--no-browser", f"--port={port}", "--Voila.ip=127.0.0.1",
             "--Voila.port_retries=0", str(lessons / "03_the_st_mapping.ipynb"),
         ]  # fmt: skip
-        with log.open("w") as out:
-            process = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT)
-        url = f"http://127.0.0.1:{port}/"
-        try:
-            wait_for_server(url, process, log)
-            break
-        except (RuntimeError, http.client.HTTPException):  # the port was taken: another
-            process.kill()
-    else:
-        raise AssertionError(f"Voilà did not start:\n{log.read_text()[-2000:]}")
+
+    process, port = start_on_free_port(command, log, env)
+    url = f"http://127.0.0.1:{port}/"
     try:
         opened = []
         for _ in range(2):  # two students keep their pages open: two kernels

@@ -4,20 +4,17 @@ mode; driven in Debian's Chromium."""
 
 from __future__ import annotations
 
-import http.client
 import importlib.util
 import io
 import os
 import re
-import subprocess
 import sys
 import time
 
 import nbformat
 import numpy as np
 import pytest
-from browser import ARTIFACTS, ROOT, free_port, steady_box, stop
-from browser import _wait_for as wait_for_server
+from browser import ARTIFACTS, ROOT, start_on_free_port, steady_box, stop
 from PIL import Image
 
 from interp import editions
@@ -120,22 +117,15 @@ def slides_server(tmp_path):
     }
     env.pop("MPLBACKEND", None)
     log = tmp_path / "voila.log"
-    for _attempt in range(3):  # a free port can be taken (by another test's kernel, say) first
-        port = free_port()
-        command = [
+
+    def command(port: int) -> list[str]:
+        return [
             sys.executable, "-m", "interp.classroom", "--template=interp-reveal", "--no-browser",
             f"--port={port}", "--Voila.ip=127.0.0.1", "--Voila.port_retries=0", str(lessons),
         ]  # fmt: skip
-        with log.open("w") as out:
-            process = subprocess.Popen(command, env=env, stdout=out, stderr=subprocess.STDOUT)
-        base = f"http://127.0.0.1:{port}"
-        try:
-            wait_for_server(base + "/", process, log)
-            break
-        except (RuntimeError, http.client.HTTPException):  # the port was taken: another
-            process.kill()
-    else:
-        raise AssertionError(f"Voilà did not start:\n{log.read_text()[-2000:]}")
+
+    process, port = start_on_free_port(command, log, env)
+    base = f"http://127.0.0.1:{port}"
     try:
         yield base
     finally:
