@@ -14,6 +14,7 @@ from matplotlib.backend_bases import MouseEvent
 
 import interp
 from interp import approximation, apps
+from interp.apps._app import on_slider
 from interp.plots.gpu import LAB_CAMERA
 from interp.plots.registry import RESOLUTIONS
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, checker_views
@@ -98,6 +99,51 @@ def test_dragging_an_endpoint_moves_every_linked_panel():
     mouse("button_release_event", 4.0, -2.0)
     assert app.controls["A_w"].value == pytest.approx(4.0, abs=0.05)
     assert app.controls["A_x"].value == pytest.approx(-2.0, abs=0.05)
+
+
+#: What Chromium's slider (noUiSlider in JupyterLab, ipywidgets 8) made of values the kernel
+#: set on A's sliders while A was dragged (its range and step; the kernel's value; the page's),
+#: read from the values the page sent back before the kernel copied its arithmetic.
+PAGE_SNAPPED = [
+    ((0.5, 9.5, 0.05), 7.743134378535013, 7.75),
+    ((0.5, 9.5, 0.05), 7.920408336474697, 7.9),
+    ((0.5, 9.5, 0.05), 8.097682294414382, 8.1),  # not 0.5 + 152 * 0.05 = 8.100000000000001
+    ((0.5, 9.5, 0.05), 8.274956252354064, 8.25),
+    ((0.5, 9.5, 0.05), 8.452230210293749, 8.450000000000001),
+    ((0.5, 9.5, 0.05), 2.19161264709465, 2.2),
+    ((0.5, 9.5, 0.05), 3.2330427441091176, 3.25),
+    ((-4.5, 4.5, 0.05), -1.4600975459955992, -1.4499999999999993),
+]
+
+
+@pytest.mark.parametrize(("bounds", "value", "page"), PAGE_SNAPPED)
+def test_an_endpoint_is_put_where_the_pages_slider_puts_it(bounds, value, page):
+    low, high, step = bounds
+    slider = widgets.FloatSlider(min=low, max=high, step=step)
+    assert on_slider(slider, value) == page  # the very same number: the page sends nothing back
+
+
+def test_an_endpoint_dragged_goes_on_its_sliders_steps_and_draws_once_a_step():
+    app = apps.the_problem()
+    app.figure.canvas.draw()
+    ax = app.plot.view.ax
+    start = app.plot.view.points["A"]
+
+    def mouse(name, w, x):
+        px, py = ax.transData.transform((w, x))
+        app.figure.canvas.callbacks.process(name, MouseEvent(name, app.figure.canvas, px, py, 1))
+
+    mouse("button_press_event", -start[1], start[0])
+    draws = app.coalescer.draws
+    mouse("motion_notify_event", 6.013, 1.0)
+    assert app.values["A_w"] == 6.0 and app.coalescer.draws == draws + 1
+    mouse("motion_notify_event", 6.02, 1.01)  # the same steps: nothing to draw
+    mouse("button_release_event", 6.02, 1.01)
+    assert app.coalescer.draws == draws + 1
+    for name in ("A_w", "A_x"):
+        slider = app.controls[name]
+        steps = (app.values[name] - slider.min) / slider.step
+        assert steps == pytest.approx(round(steps), abs=1e-9)
 
 
 def test_st_mapping_marks_the_derived_peak():

@@ -24,6 +24,7 @@ PYTHONPATH), whatever the environment has installed; a test checks that they do.
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 import time
 
@@ -209,17 +210,18 @@ def assert_no_errors(page) -> None:
     assert not page.console_errors, f"console errors since Run All: {page.console_errors}"
 
 
-def drag_by(page, locator, dx: float, start=None) -> None:
-    """Press on ``locator``'s centre (or ``start``), move ``dx`` px in small steps, let go."""
+def drag_by(page, locator, dx: float, start=None, moves: int = 3, gap_ms: float = 16) -> None:
+    """Press on ``locator``'s centre (or ``start``), move ``dx`` px in ``moves`` steps
+    ``gap_ms`` apart, let go."""
     if start is None:
         box = steady_box(locator)
         start = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
     x, y = start
     page.mouse.move(x, y)
     page.mouse.down()
-    for step in range(1, 4):
-        page.mouse.move(x + dx * step / 3, y)
-        page.wait_for_timeout(16)
+    for step in range(1, moves + 1):
+        page.mouse.move(x + dx * step / moves, y)
+        page.wait_for_timeout(gap_ms)
     page.mouse.up()
 
 
@@ -301,6 +303,49 @@ def test_dragging_endpoint_a_moves_the_figure(lesson, request, name):
     assert after["A_w"] != before["A_w"], "A's depth did not change"
     readout = slider_for(root, "A: depth w").locator(".widget-readout").inner_text()
     assert abs(float(readout) - float(after["A_w"])) <= 0.025 + 1e-9, "A's slider did not follow"
+    assert_no_errors(page)
+
+
+#: Kernel code: note every change of A's sliders in app ``Out[count]``, and whether the app made
+#: it itself (holding its redraws, as a drag of A does) or the page sent it.
+WATCH_A = """
+_app = Out[{count}]
+_interp_a_changes = []
+for _name in ("A_w", "A_x"):
+    _app.controls[_name].observe(
+        lambda change, app=_app, name=_name: _interp_a_changes.append(
+            [name, change["new"], "app" if app._holding_depth else "page"]),
+        names="value")
+print(_app.coalescer.draws)
+"""
+
+
+@pytest.mark.parametrize("name", ["the_problem", "projecting_a_line"])
+def test_dragging_endpoint_a_draws_each_move_once(lesson, request, name):
+    """The app puts A's sliders where the page's sliders would put them (on their steps, to
+    the last bit: ``interp.apps._app.on_slider``), so the page sends nothing back: the page had
+    answered each move with the value snapped to the slider's step, which the app drew as a
+    second frame (and one more after the mouse was let go)."""
+    page, counts = lesson(LESSON_OF[name])
+    request.node.page_on_show = page
+    root = app_root(page, name)
+    canvas = figure_canvas(root)
+    canvas.scroll_into_view_if_needed()
+    box = steady_box(canvas)
+    ax, ay, axes = endpoint_a(page, counts[name])
+    draws_before = int(kernel_run(page, WATCH_A.format(count=counts[name])))
+    dx = 60 if ax + 60 < axes[0] + axes[2] else -60
+    drag_by(page, canvas, dx, start=(box["x"] + ax, box["y"] + ay), moves=8, gap_ms=50)
+    wait_idle(page, quiet_ms=500, timeout=60)
+    changes = json.loads(kernel_run(page, "import json; print(json.dumps(_interp_a_changes))"))
+    draws = int(kernel_run(page, f"print(Out[{counts[name]}].coalescer.draws)")) - draws_before
+    made = [c for c in changes if c[2] == "app"]
+    assert len({c[1] for c in made if c[0] == "A_w"}) >= 3, f"A hardly moved: {changes}"
+    assert [c for c in changes if c[2] == "page"] == [], f"the page sent values back: {changes}"
+    assert draws <= len(made), f"{draws} draws for {len(made)} changes the drag made"
+    readout = slider_for(root, "A: depth w").locator(".widget-readout").inner_text()
+    shown = json.loads(kernel_run(page, f"print(Out[{counts[name]}].values['A_w'])"))
+    assert readout == f"{shown:.2f}", (readout, shown)
     assert_no_errors(page)
 
 

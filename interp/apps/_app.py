@@ -452,6 +452,40 @@ def slider(
     return widgets.FloatSlider(value=value, min=low, max=high, step=step, **common)
 
 
+def on_slider(control: widgets.FloatSlider, value: float) -> float:
+    """The value ``control``'s slider in the page takes for ``value``: within its range and on
+    its steps, computed as that slider computes it.
+
+    The page's slider (noUiSlider, drawn by ipywidgets) snaps a value the kernel sets to its
+    steps, in percent of its range, and sends the result back when it is not the very same
+    number, as a change made in the page. An endpoint dragged in lesson 2's figure set A's
+    depth to 7.743...; the page answered 7.75, and the app drew a second frame for each mouse
+    move, and one more after the mouse was let go. So the kernel sets what the page would:
+    sometimes not the decimal itself (8.450000000000001 for 8.45), which is why this copies
+    the page's arithmetic rather than rounding to the step.
+
+    Examples
+    --------
+    >>> depth = widgets.FloatSlider(min=0.5, max=9.5, step=0.05)
+    >>> on_slider(depth, 7.743134378535013), on_slider(depth, 8.452230210293749)
+    (7.75, 8.450000000000001)
+    >>> on_slider(depth, 0.1), on_slider(depth, 9.49)
+    (0.5, 9.5)
+    """
+    low, high, step = float(control.min), float(control.max), float(control.step)
+    if value <= low:
+        return low
+    if value >= high:
+        return high
+    span = high - low
+    percent = 100 * (value - low) / span  # noUiSlider's toStepping, one range from 0 to 100 %
+    steps = 100 * step / span
+    percent = math.floor(percent / steps + 0.5) * steps  # its getStep: JavaScript's Math.round
+    if percent >= 100:
+        return high
+    return percent * span / 100 + low  # its fromStepping
+
+
 def int_slider(value: int, low: int, high: int, description: str) -> widgets.IntSlider:
     """An integer slider that updates while it is dragged."""
     return widgets.IntSlider(

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from matplotlib.backend_bases import MouseEvent
 
-from interp.apps._app import App
+from interp.apps._app import App, on_slider
 from interp.plots.registry import LessonFigure
 
 
@@ -33,9 +33,12 @@ class DragEndpoints(App):
             return
         name = self._dragging
         w_control, x_control = self.controls[f"{name}_w"], self.controls[f"{name}_x"]
-        with self._holding():
-            w_control.value = min(max(float(event.xdata), w_control.min), w_control.max)
-            x_control.value = min(max(float(event.ydata), x_control.min), x_control.max)
+        before = (w_control.value, x_control.value)
+        with self._holding():  # on the sliders' steps, as the page has them (see on_slider)
+            w_control.value = on_slider(w_control, float(event.xdata))
+            x_control.value = on_slider(x_control, float(event.ydata))
+        if (w_control.value, x_control.value) == before:
+            return  # within the same steps: the same picture
         # Latest position wins, as for a slider: the browser sends a move every 33 ms, and
         # drawing each in turn left seconds of stale frames after the mouse was let go.
         self.coalescer.request()
