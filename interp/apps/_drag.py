@@ -8,6 +8,13 @@ from interp.apps._app import App, on_slider
 from interp.plots.registry import LessonFigure
 
 
+#: The page sends the kernel a mouse move at most this often (ms), against ipympl's 33: a drag
+#: of A showed at most 30 pictures a second (26.5-28.3 in four runs of ``make bench-browser``,
+#: interleaved), and 35.1-41.4 with 16, its steps and settling as before. The app draws only
+#: the latest move (``coalescer``), so moves that come faster than it draws build no backlog.
+MOVES_EVERY_MS = 16
+
+
 class DragEndpoints(App):
     """An app whose figure has a top view (``plot.view``, a :class:`~interp.plots.LineView`)
     whose endpoints A and B the mouse can drag; the sliders follow."""
@@ -17,6 +24,8 @@ class DragEndpoints(App):
     def __init__(self, figure_class: type[LessonFigure]) -> None:
         super().__init__(figure_class)
         canvas = self.figure.canvas
+        if hasattr(canvas, "pan_zoom_throttle"):  # ipympl's: the page's mouse moves, at most
+            canvas.pan_zoom_throttle = MOVES_EVERY_MS  # one per this many ms
         canvas.mpl_connect("button_press_event", self._press)
         canvas.mpl_connect("motion_notify_event", self._move)
         canvas.mpl_connect("button_release_event", self._release)
