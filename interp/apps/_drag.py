@@ -7,7 +7,6 @@ from matplotlib.backend_bases import MouseEvent
 from interp.apps._app import App, on_slider
 from interp.plots.registry import LessonFigure
 
-
 #: The page sends the kernel a mouse move at most this often (ms), against ipympl's 33: a drag
 #: of A showed at most 30 pictures a second (26.5-28.3 in four runs of ``make bench-browser``,
 #: interleaved), and 35.1-41.4 with 16, its steps and settling as before. The app draws only
