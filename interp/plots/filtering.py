@@ -140,10 +140,11 @@ class FilteringPanels(Plot):
         ticks = [0, 64, 128, 192, 256]
         texture_ax.set_xticks(ticks)
         texture_ax.set_yticks(ticks)
-        texture_ax.set_title("footprints in the texture", fontsize="small")
-        # What the texture panel shows, as a legend: it changes only with the frequency and the
-        # scale, and a live canvas notices a legend change and redraws all (the texture image
-        # itself stays in the saved background). Beneath the footprints, drawn over it.
+        # What the texture panel shows, as a legend: it changes only with the frequency, as the
+        # texture image does, and a live canvas notices a legend change and redraws all (the
+        # image stays in the saved background). Beneath the footprints, drawn over it. How much
+        # the footprints are enlarged is in the panel's title, which a live canvas redraws on
+        # every step: changing it costs no more than a camera step.
         self.legend = texture_ax.legend(
             handles=[
                 Patch(facecolor="0.2", edgecolor="0.2", label="checks"),
@@ -156,7 +157,7 @@ class FilteringPanels(Plot):
             framealpha=0.9,
         )  # fmt: skip
         self.legend.set_zorder(0.5)
-        self._texture_key: tuple | None = None
+        self._texture_key: int | None = None
 
         blank = np.zeros((height, width))
         levels = int(LOD_RANGE[1] - LOD_RANGE[0])  # one colour per whole level: bands show
@@ -205,12 +206,13 @@ class FilteringPanels(Plot):
             scene, width, height, int(p["frequency"]), mode=str(p["mode"])
         )
         frags = views.fragments
-        if self._texture_key != (views.frequency, p["scale"]):
+        if self._texture_key != views.frequency:
             self.texture.set_data(mipmap.checker_texture(views.frequency, views.size))
-            checks, footprints = self.legend.get_texts()
-            checks.set_text(f"{views.frequency} x {views.frequency} checks")
-            footprints.set_text(f"pixel footprints, {p['scale']:g}x")
-            self._texture_key = (views.frequency, p["scale"])
+            self.legend.get_texts()[0].set_text(f"{views.frequency} x {views.frequency} checks")
+            self._texture_key = views.frequency
+        title = f"footprints in the texture, drawn {p['scale']:g}x"
+        if self.axes[0].get_title() != title:
+            self.axes[0].set_title(title, fontsize="small")
         self.lod.set_data(np.ma.masked_invalid(views.lod_image))
         filtered = getattr(views, str(p["filter"]))
         self.image.set_data(np.ma.masked_array(filtered, mask=~frags.covered))
@@ -230,7 +232,10 @@ class FilteringPanels(Plot):
 
     @property
     def dynamic(self) -> list:
-        return [self.footprints, self.lod, self.image, *self.marks, self.axes[2].title]
+        return [
+            self.footprints, self.lod, self.image, *self.marks, self.axes[0].title,
+            self.axes[2].title,
+        ]  # fmt: skip
 
 
 class MipmapPyramid(Plot):
