@@ -11,12 +11,14 @@ import threading
 import time
 import warnings
 
+import ipywidgets as widgets
 import matplotlib
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
 from interp import apps
+from interp.apps import _live
 from interp.apps._glyphs import keep_glyphs
 from interp.apps._live import Blitter, Coalescer
 from interp.apps._samples import SampledImage, keep_samples
@@ -61,6 +63,72 @@ def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
         blitter.draw()
         assert_is_full_redraw(app.figure)
     assert blitter.blits >= 1, "the blit path was never taken"
+
+
+def sweep(control: widgets.Widget, count: int = 4) -> list:
+    """``count`` values across a slider's range, as it takes them: up, down and up again, and
+    back to where it was."""
+    spread = np.linspace(control.min, control.max, count)
+    if isinstance(control, widgets.FloatLogSlider):
+        values = [float(10.0**e) for e in spread]
+    elif isinstance(control, widgets.IntSlider):
+        values = [round(float(v)) for v in spread]
+    else:
+        values = [float(v) for v in spread]
+    return values + values[-2::-1] + values[1:] + [control.value]
+
+
+@pytest.mark.parametrize("name", sorted(apps.ALL))
+def test_a_background_brought_back_is_the_full_redraw(name):
+    """Every slider of every app swept up, down and up again across its range: each frame,
+    drawn over a new background, over the one in use or over one kept for an earlier setting,
+    is the full redraw pixel for pixel."""
+    app = apps.ALL[name]()
+    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter.draw()
+    for key, control in app.controls.items():
+        if hasattr(control, "min"):
+            for value in sweep(control):
+                app.set(**{key: value})
+                blitter.draw()
+                assert_is_full_redraw(app.figure)
+
+
+def test_a_slider_dragged_back_across_a_new_colour_scale_redraws_all_once():
+    """Lesson 6's error scale changes between pitch 40 and 50 (its largest error's nice
+    ceiling): the first crossing redraws the whole figure, the ones after it put back the
+    background kept for each side."""
+    app = apps.checkerboards_outside()
+    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter.draw()
+    scales = []
+    for pitch in (40.0, 50.0, 40.0, 50.0, 40.0):
+        app.set(pitch=pitch)
+        blitter.draw()
+        scales.append(app.figure.axes[-1].get_ylim())  # the colour bar's
+        assert_is_full_redraw(app.figure)
+    assert scales[0] != scales[1] and scales[::2] == [scales[0]] * 3
+    assert (blitter.full_draws, blitter.blits) == (2, 4)
+    assert len(blitter.kept) == 2
+
+
+def test_kept_backgrounds_stay_within_their_memory(monkeypatch):
+    monkeypatch.setattr(_live, "KEPT_BACKGROUNDS", 3 * 4 * 200 * 100)  # three of 200 x 100
+    figure = plt.figure(figsize=(2, 1), dpi=100)
+    (line,) = figure.subplots().plot([0, 1])
+    blitter = Blitter(figure, [line])
+    for top in range(2, 8):
+        figure.axes[0].set_ylim(0, top)
+        blitter.draw()
+        assert_is_full_redraw(figure)
+    assert len(blitter.kept) == 3 and blitter.full_draws == 6
+    figure.axes[0].set_ylim(0, 5)  # kept: put back
+    blitter.draw()
+    assert blitter.full_draws == 6
+    figure.axes[0].set_ylim(0, 2)  # forgotten: drawn again
+    blitter.draw()
+    assert blitter.full_draws == 7
+    assert_is_full_redraw(figure)
 
 
 def test_enlarging_the_footprints_redraws_only_what_changes():
