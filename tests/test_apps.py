@@ -113,6 +113,14 @@ PAGE_SNAPPED = [
     ((0.5, 9.5, 0.05), 2.19161264709465, 2.2),
     ((0.5, 9.5, 0.05), 3.2330427441091176, 3.25),
     ((-4.5, 4.5, 0.05), -1.4600975459955992, -1.4499999999999993),
+    # Edge cases, from noUiSlider's own code (copied from the page's bundle) run in node by a
+    # reviewer: a value one ulp below a half step (JavaScript rounds it down, floor(x + 0.5)
+    # does not), and a value a hair below the top, which the page takes as 100 %.
+    ((0.1, 0.6, 0.5), 0.35, 0.1),
+    ((0.1, 0.95, 0.2), 0.19999999999999998, 0.1),
+    ((0.001, 2.5, 0.01), 0.005999999999999999, 0.001),
+    ((-1.0, 1.0, 0.15), 0.9999999999999999, 1.0),
+    ((-9.0, -2.0, 0.3), -2.0000000000000004, -2.0),
 ]
 
 

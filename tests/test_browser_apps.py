@@ -311,12 +311,20 @@ def test_dragging_endpoint_a_moves_the_figure(lesson, request, name):
 WATCH_A = """
 _app = Out[{count}]
 _interp_a_changes = []
+_interp_a_watchers = {{}}
 for _name in ("A_w", "A_x"):
-    _app.controls[_name].observe(
-        lambda change, app=_app, name=_name: _interp_a_changes.append(
-            [name, change["new"], "app" if app._holding_depth else "page"]),
-        names="value")
+    _interp_a_watchers[_name] = lambda change, app=_app, name=_name: _interp_a_changes.append(
+        [name, change["new"], "app" if app._holding_depth else "page"])
+    _app.controls[_name].observe(_interp_a_watchers[_name], names="value")
 print(_app.coalescer.draws)
+"""
+
+#: Kernel code: stop watching (:data:`WATCH_A`) and print what was seen.
+WATCHED_A = """
+import json as _json
+for _name, _watcher in _interp_a_watchers.items():
+    Out[{count}].controls[_name].unobserve(_watcher, names="value")
+print(_json.dumps(_interp_a_changes))
 """
 
 
@@ -337,7 +345,7 @@ def test_dragging_endpoint_a_draws_each_move_once(lesson, request, name):
     dx = 60 if ax + 60 < axes[0] + axes[2] else -60
     drag_by(page, canvas, dx, start=(box["x"] + ax, box["y"] + ay), moves=8, gap_ms=50)
     wait_idle(page, quiet_ms=500, timeout=60)
-    changes = json.loads(kernel_run(page, "import json; print(json.dumps(_interp_a_changes))"))
+    changes = json.loads(kernel_run(page, WATCHED_A.format(count=counts[name])))
     draws = int(kernel_run(page, f"print(Out[{counts[name]}].coalescer.draws)")) - draws_before
     made = [c for c in changes if c[2] == "app"]
     assert len({c[1] for c in made if c[0] == "A_w"}) >= 3, f"A hardly moved: {changes}"

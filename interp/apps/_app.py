@@ -479,9 +479,15 @@ def on_slider(control: widgets.FloatSlider, value: float) -> float:
         return high
     span = high - low
     percent = 100 * (value - low) / span  # noUiSlider's toStepping, one range from 0 to 100 %
+    if percent >= 100:  # getStep keeps 100 as it is
+        return high
     steps = 100 * step / span
-    percent = math.floor(percent / steps + 0.5) * steps  # its getStep: JavaScript's Math.round
-    if percent >= 100:
+    ratio = percent / steps
+    whole = math.floor(ratio)
+    if ratio - whole >= 0.5:  # JavaScript's Math.round (x - floor(x) is exact; x + 0.5 is not)
+        whole += 1
+    percent = whole * steps  # its getStep
+    if percent >= 100:  # clamped to the range
         return high
     return percent * span / 100 + low  # its fromStepping
 

@@ -8,9 +8,10 @@ from interp.apps._app import App, on_slider
 from interp.plots.registry import LessonFigure
 
 #: The page sends the kernel a mouse move at most this often (ms), against ipympl's 33: a drag
-#: of A showed at most 30 pictures a second (26.5-28.3 in four runs of ``make bench-browser``,
-#: interleaved), and 35.1-41.4 with 16, its steps and settling as before. The app draws only
-#: the latest move (``coalescer``), so moves that come faster than it draws build no backlog.
+#: of A showed at most 30 pictures a second (26.5-28.3 in two interleaved pairs of runs of
+#: ``make bench-browser``, lessons 1 and 2 each), and 35.1-41.4 with 16, with the CPUs busier
+#: (88-92% against 60-67%) and settling in 32-85 ms against 32-70. The app draws only the
+#: latest move (``coalescer``), so moves that come faster than it draws build no backlog.
 MOVES_EVERY_MS = 16
 
 
@@ -47,8 +48,9 @@ class DragEndpoints(App):
             x_control.value = on_slider(x_control, float(event.ydata))
         if (w_control.value, x_control.value) == before:
             return  # within the same steps: the same picture
-        # Latest position wins, as for a slider: the browser sends a move every 33 ms, and
-        # drawing each in turn left seconds of stale frames after the mouse was let go.
+        # Latest position wins, as for a slider: the browser sends a move every 16 ms
+        # (MOVES_EVERY_MS), and drawing each in turn left seconds of stale frames after the
+        # mouse was let go.
         self.coalescer.request()
 
     def _release(self, event: MouseEvent) -> None:
