@@ -112,6 +112,45 @@ def test_a_slider_dragged_back_across_a_new_colour_scale_redraws_all_once():
     assert len(blitter.kept) == 2
 
 
+def shows_the_full_redraw(figure) -> bool:
+    """Whether the canvas shows what drawing the whole figure gives (and then it does)."""
+    shown = np.asarray(figure.canvas.buffer_rgba()).copy()
+    figure.canvas.draw()
+    return np.array_equal(shown, np.asarray(figure.canvas.buffer_rgba()))
+
+
+@pytest.mark.parametrize("name", ["colour_quad", "the_problem", "checkerboards_outside"])
+def test_a_figure_resized_and_back_is_drawn_whole(name):
+    """Axes of a fixed aspect (images, a 3D box) are placed anew only by a full draw: a
+    background kept at a size the figure comes back to was put back under axes still placed
+    for the other size (125247 wrong pixels in lesson 5's colour quad)."""
+    app = apps.ALL[name]()
+    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter.draw()
+    width, height = app.figure.get_size_inches()
+    app.figure.set_size_inches(width * 1.1, height * 0.9)  # as ipympl's handle_resize does
+    app.set(**{STEPS.get(name, ("pitch",))[0]: app.plot.params[STEPS.get(name, ("pitch",))[0]]})
+    blitter.draw()
+    app.figure.set_size_inches(width, height)
+    blitter.draw()
+    assert shows_the_full_redraw(app.figure)
+    assert blitter.full_draws == 3
+
+
+def test_a_change_made_from_a_cell_is_not_undone_by_a_kept_background(monkeypatch):
+    """A cell changes a label; a slider then comes back to a setting whose background was
+    kept from before the cell: the label must stay (909 pixels were the old picture)."""
+    app = apps.st_mapping()
+    monkeypatch.setattr(apps.App, "live", property(lambda self: True))
+    app.set(w2=4.0)
+    app.set(w2=9.0)  # another scale of the gap's axis: a second background
+    app.figure.axes[0].set_xlabel("a label of the teacher's")
+    app.set(w2=4.0)
+    assert shows_the_full_redraw(app.figure)
+    app.set(w2=9.0)
+    assert shows_the_full_redraw(app.figure)
+
+
 def test_kept_backgrounds_stay_within_their_memory(monkeypatch):
     monkeypatch.setattr(_live, "KEPT_BACKGROUNDS", 3 * 4 * 200 * 100)  # three of 200 x 100
     figure = plt.figure(figsize=(2, 1), dpi=100)

@@ -222,6 +222,10 @@ class App:
             # Stale before the update: a cell changed the figure itself (a label, say), which
             # the blit's background does not know; then pyplot's full redraw must still come.
             changed_outside = self.figure.stale
+            if changed_outside:  # no saved background has that change
+                for blitter in (self.blitter, self.live_blitter):
+                    if blitter is not None:
+                        blitter.forget()
             with styled(**self._style):  # titles set now must look like those set at the start
                 self.plot.update(**self.values)
             if self.live:

@@ -425,6 +425,11 @@ class Blitter:
             canvas.draw()
             return
         key = static_key(self.figure)
+        if self.key is not None and key[:2] != self.key[:2]:
+            # Another size or pixel ratio: axes of a fixed aspect (images, a 3D box, colour
+            # bars) are placed anew only by a full draw, so what was kept at another size may
+            # not match where they are now, even back at that size.
+            self.forget()
         if (self.background is not None and key == self.key) or self._bring_back(key):
             canvas.restore_region(self.background)
             self.blits += 1
@@ -570,6 +575,13 @@ class Blitter:
             if reach.width > 0 and reach.height > 0 and reach.overlaps(box):
                 return False
         return True
+
+    def forget(self) -> None:
+        """Draw the whole figure next time, and forget every kept background: something the
+        key does not see has changed (a cell changed a label, the figure's size changed)."""
+        self.background = None
+        self.key = None
+        self.kept.clear()
 
     def _keep(self) -> None:
         """Keep the background just made, and what belongs to it, for its key; forget the
