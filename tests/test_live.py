@@ -49,6 +49,20 @@ def assert_is_full_redraw(figure) -> None:
     np.testing.assert_array_equal(shown, np.asarray(figure.canvas.buffer_rgba()))
 
 
+def blit_each(app, name: str, values, blitter: Blitter | None = None) -> Blitter:
+    """Set ``app``'s control ``name`` to each of ``values`` in turn, blitting after each, and
+    check that every frame is the full redraw; the blitter (unless given, a new one, drawn
+    first)."""
+    if blitter is None:
+        blitter = Blitter(app.figure, app.plot.dynamic)
+        blitter.draw()
+    for value in values:
+        app.set(**{name: value})
+        blitter.draw()
+        assert_is_full_redraw(app.figure)
+    return blitter
+
+
 @pytest.mark.parametrize("name", sorted(apps.ALL))
 def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
     app = apps.ALL[name]()
@@ -88,10 +102,7 @@ def test_a_background_brought_back_is_the_full_redraw(name):
     blitter.draw()
     for key, control in app.controls.items():
         if hasattr(control, "min"):
-            for value in sweep(control):
-                app.set(**{key: value})
-                blitter.draw()
-                assert_is_full_redraw(app.figure)
+            blit_each(app, key, sweep(control), blitter)
 
 
 def test_a_slider_dragged_back_across_a_new_colour_scale_redraws_all_once():
@@ -176,12 +187,7 @@ def test_enlarging_the_footprints_redraws_only_what_changes():
     legend quoted the scale: each step was a full redraw, 20 ms against 3 in the kernel, and
     the slider's steps 43-55 ms in Chromium, against 37-39 since.)"""
     app = apps.texture_filtering()
-    blitter = Blitter(app.figure, app.plot.dynamic)
-    blitter.draw()
-    for scale in (9.0, 16.0, 32.0, 1.0):
-        app.set(scale=scale)
-        blitter.draw()
-        assert_is_full_redraw(app.figure)
+    blitter = blit_each(app, "scale", (9.0, 16.0, 32.0, 1.0))
     assert (blitter.full_draws, blitter.blits) == (1, 4)
     assert app.figure.axes[0].get_title() == "footprints in the texture, drawn 1x"
     app.set(frequency="16")  # the texture itself changes: then the whole figure is drawn
@@ -772,12 +778,7 @@ def test_a_label_reaching_into_a_kept_titles_box_is_drawn():
     """Lesson 2's title depends on the depths only; with A high up (x = 4.5) its label reaches
     into the title's box: putting back the title's picture erased the label's tip."""
     app = apps.projecting_a_line()
-    blitter = Blitter(app.figure, app.plot.dynamic)
-    blitter.draw()
-    for x in (4.5, 4.0, 0.0, 4.5):
-        app.set(A_x=x)
-        blitter.draw()
-        assert_is_full_redraw(app.figure)
+    blitter = blit_each(app, "A_x", (4.5, 4.0, 0.0, 4.5))
     assert blitter.blits == 4
 
 
