@@ -70,6 +70,19 @@ def fit_y(ax: Axes, *values: object) -> None:
     ax.set_ylim(round(float(low), 12), round(float(high), 12))
 
 
+def decades(low: float, high: float) -> tuple[float, float]:
+    """The powers of ten just outside ``[low, high]`` (both > 0): a log axis's ends.
+
+    Examples
+    --------
+    >>> decades(0.03, 2.0)
+    (0.01, 10.0)
+    >>> decades(0.01, 10.0)
+    (0.01, 10.0)
+    """
+    return float(10.0 ** np.floor(np.log10(low))), float(10.0 ** np.ceil(np.log10(high)))
+
+
 def nice_ceiling(x: float) -> float:
     """The smallest of 1, 1.5, 2, 3, 4, 5, 6, 8 times a power of ten that is >= x (x > 0).
 

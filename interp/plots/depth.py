@@ -8,7 +8,7 @@ from matplotlib.patches import Rectangle
 
 from interp import depth, lerp
 from interp.plots._base import Plot
-from interp.plots._style import AFFINE, CORRECT, OTHERS, markevery
+from interp.plots._style import AFFINE, CORRECT, OTHERS, decades, markevery
 
 
 def _normalized(y: np.ndarray) -> np.ndarray:
@@ -146,6 +146,9 @@ class DepthAcross(Plot):
 #: Line styles of the precision plot's three near planes.
 _NEAR_STYLES = (CORRECT, OTHERS[0], AFFINE)
 
+#: The precision plot's near planes, as multiples of the chosen one, and their legend labels.
+_NEAR_FACTORS = ((1.0, "near = n"), (10.0, "near = 10 n"), (0.1, "near = n / 10"))
+
 
 class DepthPrecision(Plot):
     """The smallest depth difference a depth buffer notices, against depth, for three near
@@ -156,13 +159,32 @@ class DepthPrecision(Plot):
     coarser; a float32 buffer storing window z is the same beyond about twice the near plane;
     a reversed-Z float32 buffer hardly depends on the near plane at all.
 
+    The axes stay as they are (:attr:`DEPTHS`, :attr:`STEPS`) for every near plane, far plane
+    and buffer lesson 4's sliders reach: a change moves the curves, which is what the lesson
+    asks a student to watch (a tenfold smaller near plane lifts a fixed-point curve by a
+    decade), and a live figure redraws only the curves and the title. Curves beyond those
+    ranges (other arguments) widen the axes to the decades that hold them.
+
     Examples
     --------
     >>> import matplotlib.pyplot as plt
     >>> plot = DepthPrecision(plt.subplots()[1], near=0.1, far=100.0)
-    >>> len(plot.lines)
-    3
+    >>> len(plot.lines), plot.ax.get_xlim() == DepthPrecision.DEPTHS
+    (3, True)
+    >>> [text.get_text() for text in plot.ax.get_legend().get_texts()]
+    ['near = n', 'near = 10 n', 'near = n / 10']
+    >>> plot.update(near=0.01)               # tenfold smaller: the same axes
+    >>> plot.ax.get_ylim() == DepthPrecision.STEPS, plot.ax.get_title()
+    (True, 'float32 depth buffer: n = 0.01, far = 100')
     """
+
+    #: The depths on the x axis: from a tenth of the smallest near plane of lesson 4's slider
+    #: (0.001 / 10) to its largest far plane (1000).
+    DEPTHS = (1e-4, 1e3)
+    #: The depth steps on the y axis: the decades holding every curve those sliders and any
+    #: buffer draw (from 9e-13, float32 at a near plane of 0.0001, to 970, float32 at a far
+    #: plane of 1000 with a near plane of 0.0001).
+    STEPS = (1e-13, 1e3)
 
     def __init__(
         self,
@@ -182,25 +204,26 @@ class DepthPrecision(Plot):
                 linestyle=st["linestyle"],
                 marker=st["marker"],
                 markevery=markevery(points),
+                label=label,
             )[0]
-            for st in _NEAR_STYLES
+            for st, (_, label) in zip(_NEAR_STYLES, _NEAR_FACTORS, strict=True)
         ]
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("view depth w")
         ax.set_ylabel("smallest depth step the buffer resolves")
+        self._legend_labels: tuple[str, ...] | None = None
         super().__init__(near=near, far=far, buffer=buffer)
 
     def redraw(self) -> None:
         """Draw for the current ``near``, ``far`` and ``buffer``."""
         near, far = float(self.params["near"]), float(self.params["far"])
         buffer = str(self.params["buffer"])
-        steps = []
-        for line, factor in zip(self.lines, (1.0, 10.0, 0.1), strict=True):
+        steps, shown = [], []
+        for line, (factor, label) in zip(self.lines, _NEAR_FACTORS, strict=True):
             n = near * factor
-            if 1.1 * n >= 0.9 * far:
+            if 1.1 * n >= 0.9 * far:  # no depths between this near plane and the far one
                 line.set_data([], [])
-                line.set_label("_")
                 continue
             # From just beyond the near plane to just before the far one: right at the near
             # plane float32 window z is absurdly fine, and right at the far plane reversed
@@ -208,25 +231,18 @@ class DepthPrecision(Plot):
             w = np.geomspace(1.1 * n, 0.9 * far, self.points)
             step = depth.depth_step(w, n, far, buffer)
             line.set_data(w, step)
-            line.set_label(f"near = {n:g}")
             steps.append(step)
+            shown.append(label)
         every = np.concatenate(steps)
-        self.ax.set_xlim(near * 0.1, far)
-        self.ax.set_ylim(*_decades(every.min(), every.max()))
-        self.ax.set_title(f"{buffer} depth buffer, far = {far:g}")
-        self.ax.legend(loc="upper left", fontsize="small")
+        low, high = decades(every.min(), every.max())
+        self.ax.set_xlim(min(self.DEPTHS[0], near * 0.1), max(self.DEPTHS[1], far))
+        self.ax.set_ylim(min(self.STEPS[0], low), max(self.STEPS[1], high))
+        self.ax.set_title(f"{buffer} depth buffer: n = {near:.3g}, far = {far:g}")
+        if tuple(shown) != self._legend_labels:  # only when a curve comes or goes
+            handles = [line for line in self.lines if line.get_label() in shown]
+            self.ax.legend(handles=handles, loc="upper left", fontsize="small")
+            self._legend_labels = tuple(shown)
 
     @property
     def dynamic(self) -> list:
         return [*self.lines, self.ax.title]
-
-
-def _decades(low: float, high: float) -> tuple[float, float]:
-    """The powers of ten just outside ``[low / 2, high * 2]``: small changes keep the axis.
-
-    Examples
-    --------
-    >>> _decades(3e-7, 2e-3)
-    (1e-07, 0.01)
-    """
-    return float(10.0 ** np.floor(np.log10(low / 2))), float(10.0 ** np.ceil(np.log10(high * 2)))

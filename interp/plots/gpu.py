@@ -12,7 +12,7 @@ from matplotlib.collections import LineCollection
 from interp import approximation, shaders
 from interp.camera import Camera
 from interp.plots._base import Plot, label, place_pixels
-from interp.plots._style import AFFINE, CORRECT, bare
+from interp.plots._style import AFFINE, CORRECT, bare, decades
 from interp.raster import fragments, interpolate, viewport
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
 from interp.texture import checkerboard
@@ -266,8 +266,8 @@ class ApproximationLab(Plot):
         ys = np.concatenate([spans.mean_error, tess.mean_error])
         keep = (xs > 0) & (ys >= approximation.EXACT)
         if keep.any():  # whole decades, with room for the labels: small steps keep them
-            self.ax.set_xlim(*_decades(xs[keep].min() / 1.5, xs[keep].max() * 3))
-            self.ax.set_ylim(*_decades(ys[keep].min() / 1.5, ys[keep].max() * 1.5))
+            self.ax.set_xlim(*decades(xs[keep].min() / 1.5, xs[keep].max() * 3))
+            self.ax.set_ylim(*decades(ys[keep].min() / 1.5, ys[keep].max() * 1.5))
             exact = [
                 name
                 for name, costs in (("spans", spans), ("tessellation", tess))
@@ -317,14 +317,3 @@ def _measured(
         for array in (costs.setting, costs.divides_per_pixel, costs.mean_error):
             array.setflags(write=False)
     return found
-
-
-def _decades(low: float, high: float) -> tuple[float, float]:
-    """The powers of ten just outside ``[low, high]``.
-
-    Examples
-    --------
-    >>> _decades(0.03, 2.0)
-    (0.01, 10.0)
-    """
-    return float(10.0 ** np.floor(np.log10(low))), float(10.0 ** np.ceil(np.log10(high)))
