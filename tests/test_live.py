@@ -1226,3 +1226,17 @@ def test_a_control_let_go_draws_its_last_value_sharp_at_once(monkeypatch, caplog
     first = len(frames)
     _drag(app, "w2", [4.0, 3.5, 3.0], gap=0.005, settle=1.0)
     assert live in [frame.shape[:2] for _, frame in frames[first:]]
+
+
+def test_dragging_an_attribute_in_lesson_5_moves_the_axes_only_at_grid_lines():
+    """Lesson 5's attribute axes put their ends on a grid of a quarter of the curves' scale
+    (here 0.25), a fifth of a spacing beyond the curves. Dragging a1 from 0 to 0.4 in the
+    slider's steps (a2 = 1), the lowest curve (a1, at s = 0) crosses -0.25 + 0.05 and then
+    0 + 0.05: the axes change twice, so the figure is drawn whole three times in 41 frames,
+    each frame the full redraw. Before, the ends followed a tenth of the span (a hundredth
+    once it fell below 1): 35 of 48 steps redrew the whole figure, 54 ms a step in the kernel
+    against 8."""
+    app = apps.attributes()
+    blitter = blit_each(app, "a1", [round(0.01 * k, 2) for k in range(41)])
+    assert blitter.full_draws == 3
+    assert [ax.get_ylim() for ax in app.figure.axes] == [(0.25, 1.25)] * 2

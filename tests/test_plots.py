@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import inspect
+import warnings
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -214,3 +215,22 @@ def test_a_label_that_moves_is_drawn_from_the_glyphs_kept():
         note.xy = (x, x / 3)
         note.draw(renderer)
     assert len(renderer.glyphs) == kept
+
+
+@pytest.mark.parametrize(
+    ("values", "expected"),
+    [
+        ((0.0, 1.0), (-0.25, 1.25)),
+        ((0.0, 2.4e-166), (-2.5e-10, 2.5e-10)),  # all but 0 (found by the slider fuzz)
+        ((-3.0, 0.5), (-3.75, 1.25)),  # scale 3: grid 5/4
+        ((1e6, 1e6 + 1), (750000.0, 1250000.0)),  # close together: shown so
+    ],
+)
+def test_fit_y_puts_the_ends_on_the_grid_of_a_quarter_of_the_scale(values, expected):
+    from interp.plots._style import fit_y
+
+    ax = plt.subplots()[1]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no singular limits, no numpy warning
+        fit_y(ax, *values)
+    assert ax.get_ylim() == pytest.approx(expected, rel=1e-12)

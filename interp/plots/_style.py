@@ -47,27 +47,49 @@ def markevery(n: int) -> int:
 
 
 def fit_y(ax: Axes, *values: object) -> None:
-    """Set the y range to span ``values`` (numbers or arrays), with a margin of 5% or more.
+    """Set the y range to hold ``values`` (numbers or arrays), its ends on a grid.
 
-    The ends are rounded outwards to a tenth of the range's order of magnitude, so that a
-    slider's small steps leave the axis as it is (and a live figure need not redraw it).
+    The grid's spacing is a quarter of the values' scale: their largest magnitude, less a
+    fifth, rounded up to 1, 2 or 5 times a power of ten (values up to 1.25 share the grid of
+    those up to 1). Each end lies a fifth of a spacing or more beyond the values. So an end
+    moves only when a value crosses a grid line, a slider's small steps leave the axis as it
+    is (a live figure need not redraw it), and values that come close together are shown
+    close together, not magnified to fill the axes.
 
     Examples
     --------
     >>> import matplotlib.pyplot as plt
     >>> ax = plt.subplots()[1]
     >>> fit_y(ax, 0.0, 1.0); [float(y) for y in ax.get_ylim()]
-    [-0.1, 1.1]
-    >>> fit_y(ax, 0.02, 0.97); [float(y) for y in ax.get_ylim()]   # a small change: the same
-    [-0.1, 1.1]
+    [-0.25, 1.25]
+    >>> fit_y(ax, 0.03, 0.97); [float(y) for y in ax.get_ylim()]   # a small change: the same
+    [-0.25, 1.25]
+    >>> fit_y(ax, 0.5, 0.5); [float(y) for y in ax.get_ylim()]     # flat: not magnified
+    [0.375, 0.625]
     """
-    every = np.concatenate([np.ravel(v) for v in values])
+    every = np.concatenate([np.ravel(v) for v in values]).astype(float)
     low, high = float(every.min()), float(every.max())
-    span = max(high - low, 1e-9)
-    step = 10.0 ** np.floor(np.log10(span)) / 10
-    low = np.floor(round((low - 0.05 * span) / step, 9)) * step
-    high = np.ceil(round((high + 0.05 * span) / step, 9)) * step
-    ax.set_ylim(round(float(low), 12), round(float(high), 12))
+    scale = max(abs(low), abs(high), 1e-9)  # values all but 0: a flat line at 0
+    grid = nice_step(0.8 * scale) / 4
+    margin = grid / 5
+    low = np.floor(round((low - margin) / grid, 9)) * grid
+    high = np.ceil(round((high + margin) / grid, 9)) * grid
+    ax.set_ylim(float(f"{low:.12g}"), float(f"{high:.12g}"))
+
+
+def nice_step(x: float) -> float:
+    """The smallest of 1, 2 or 5 times a power of ten that is >= x (x > 0).
+
+    Examples
+    --------
+    >>> nice_step(0.6), nice_step(1.0), nice_step(3.3)
+    (1.0, 1.0, 5.0)
+    """
+    power = 10.0 ** np.floor(np.log10(x))
+    for m in (1, 2, 5, 10):
+        if m * power >= x * (1 - 1e-12):
+            return float(f"{m * power:.12g}")
+    raise AssertionError("unreachable")  # pragma: no cover
 
 
 def decades(low: float, high: float) -> tuple[float, float]:
