@@ -70,26 +70,11 @@ def fit_y(ax: Axes, *values: object) -> None:
     every = np.concatenate([np.ravel(v) for v in values]).astype(float)
     low, high = float(every.min()), float(every.max())
     scale = max(abs(low), abs(high), 1e-9)  # values all but 0: a flat line at 0
-    grid = nice_step(0.8 * scale) / 4
+    grid = nice_ceiling(0.8 * scale, (1, 2, 5)) / 4
     margin = grid / 5
     low = np.floor(round((low - margin) / grid, 9)) * grid
     high = np.ceil(round((high + margin) / grid, 9)) * grid
     ax.set_ylim(float(f"{low:.12g}"), float(f"{high:.12g}"))
-
-
-def nice_step(x: float) -> float:
-    """The smallest of 1, 2 or 5 times a power of ten that is >= x (x > 0).
-
-    Examples
-    --------
-    >>> nice_step(0.6), nice_step(1.0), nice_step(3.3)
-    (1.0, 1.0, 5.0)
-    """
-    power = 10.0 ** np.floor(np.log10(x))
-    for m in (1, 2, 5, 10):
-        if m * power >= x * (1 - 1e-12):
-            return float(f"{m * power:.12g}")
-    raise AssertionError("unreachable")  # pragma: no cover
 
 
 def decades(low: float, high: float) -> tuple[float, float]:
@@ -105,18 +90,20 @@ def decades(low: float, high: float) -> tuple[float, float]:
     return float(10.0 ** np.floor(np.log10(low))), float(10.0 ** np.ceil(np.log10(high)))
 
 
-def nice_ceiling(x: float) -> float:
-    """The smallest of 1, 1.5, 2, 3, 4, 5, 6, 8 times a power of ten that is >= x (x > 0).
+def nice_ceiling(x: float, steps: tuple[float, ...] = (1, 1.5, 2, 3, 4, 5, 6, 8)) -> float:
+    """The smallest of ``steps`` times a power of ten that is >= x (x > 0).
 
     Examples
     --------
     >>> nice_ceiling(0.33), nice_ceiling(7.0), nice_ceiling(0.05)
     (0.4, 8.0, 0.05)
+    >>> nice_ceiling(0.6, (1, 2, 5)), nice_ceiling(3.3, (1, 2, 5)), nice_ceiling(2e-10, (1, 2, 5))
+    (1.0, 5.0, 2e-10)
     """
     power = 10.0 ** np.floor(np.log10(x))
-    for m in (1, 1.5, 2, 3, 4, 5, 6, 8, 10):
+    for m in (*steps, 10):
         if m * power >= x * (1 - 1e-12):
-            return round(float(m * power), 12)
+            return float(f"{m * power:.12g}")  # 12 digits: 0.30000000000000004 is 0.3
     raise AssertionError("unreachable")  # pragma: no cover
 
 

@@ -212,7 +212,6 @@ class DepthPrecision(Plot):
         ax.set_yscale("log")
         ax.set_xlabel("view depth w")
         ax.set_ylabel("smallest depth step the buffer resolves")
-        self._legend_labels: tuple[str, ...] | None = None
         super().__init__(near=near, far=far, buffer=buffer)
 
     def redraw(self) -> None:
@@ -238,10 +237,11 @@ class DepthPrecision(Plot):
         self.ax.set_xlim(min(self.DEPTHS[0], near * 0.1), max(self.DEPTHS[1], far))
         self.ax.set_ylim(min(self.STEPS[0], low), max(self.STEPS[1], high))
         self.ax.set_title(f"{buffer} depth buffer: n = {near:.3g}, far = {far:g}")
-        if tuple(shown) != self._legend_labels:  # only when a curve comes or goes
+        legend = self.ax.get_legend()
+        if legend is None or [t.get_text() for t in legend.get_texts()] != shown:
+            # Only when a curve comes or goes: a new legend is a full redraw of a live figure.
             handles = [line for line in self.lines if line.get_label() in shown]
             self.ax.legend(handles=handles, loc="upper left", fontsize="small")
-            self._legend_labels = tuple(shown)
 
     @property
     def dynamic(self) -> list:
