@@ -6,7 +6,9 @@ class opening the app, would leave a kernel for every page ever opened, about 13
 ``make present`` runs Voilà through :func:`main` here, which
 
 - culls kernels that are idle and have no page connected (a closed tab) after ``--idle``
-  seconds, checking every ``--interval`` seconds;
+  seconds, checking every ``--interval`` seconds; a kernel whose page has not connected yet
+  (the browser is still loading it: the idle clock starts when the notebook's cells finish)
+  is kept for at least ``page_wait`` seconds, so a slow page never finds its kernel gone;
 - caps the live kernels at ``--max-kernels``: when a new page would pass the cap, the kernel
   idle longest with no page connected is shut down to make room; if every kernel has a page
   open, the new page gets "503: the server is full" instead of exhausting the machine;
@@ -22,6 +24,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import time
 from collections.abc import Sequence
 
 from jupyter_server.services.kernels.kernelmanager import AsyncMappingKernelManager
@@ -33,6 +36,9 @@ from interp.server import send_at_once
 #: Defaults for a classroom: a closed tab's kernel goes after 5 minutes; at most 30 kernels
 #: (about 4 GB) at once.
 IDLE_SECONDS, INTERVAL_SECONDS, MAX_KERNELS = 300, 60, 30
+#: Seconds a kernel waits for its page to connect before the culler may take it: a page
+#: takes a few seconds to load after its cells ran (more on a busy server).
+PAGE_WAIT_SECONDS = 60
 
 
 class ClassroomKernelManager(AsyncMappingKernelManager):
@@ -41,16 +47,38 @@ class ClassroomKernelManager(AsyncMappingKernelManager):
     max_kernels = Integer(
         MAX_KERNELS, config=True, help="Most kernels alive at once; 0 for no limit."
     )
+    page_wait = Integer(
+        PAGE_WAIT_SECONDS,
+        config=True,
+        help="Seconds a new kernel is kept, idle or not, until its page connects.",
+    )
 
     def __init__(self, **kwargs: object) -> None:
         super().__init__(**kwargs)
+        self._unconnected: dict[str, float] = {}  # kernel id -> when it started
         send_at_once()  # this is Voilà's server process: its kernel websockets, from now on
 
     async def start_kernel(self, **kwargs: object) -> str:
         """Start a kernel, first making room if the cap is reached."""
         if self.max_kernels > 0 and len(self.list_kernel_ids()) >= self.max_kernels:
             await self._make_room()
-        return await super().start_kernel(**kwargs)
+        kernel_id = await super().start_kernel(**kwargs)
+        self._unconnected[kernel_id] = time.monotonic()
+        return kernel_id
+
+    def notify_connect(self, kernel_id: str) -> None:
+        """Note a page's connection: from now on the kernel is culled as any other."""
+        super().notify_connect(kernel_id)
+        self._unconnected.pop(kernel_id, None)
+
+    async def cull_kernel_if_idle(self, kernel_id: str) -> None:
+        """Cull as Jupyter does, but not a kernel still waiting for its page."""
+        started = self._unconnected.get(kernel_id)
+        if started is not None and time.monotonic() - started < self.page_wait:
+            return
+        await super().cull_kernel_if_idle(kernel_id)
+        if kernel_id not in self._kernels:
+            self._unconnected.pop(kernel_id, None)
 
     async def _make_room(self) -> None:
         unwatched = [k for k in self.list_kernel_ids() if not self._kernel_connections.get(k)]
@@ -60,6 +88,7 @@ class ClassroomKernelManager(AsyncMappingKernelManager):
         oldest = min(unwatched, key=lambda k: self.get_kernel(k).last_activity)
         self.log.info("interp: at %d kernels, shutting down idle %s", self.max_kernels, oldest)
         await self.shutdown_kernel(oldest)
+        self._unconnected.pop(oldest, None)
 
 
 def voila_arguments(idle: int, interval: int, max_kernels: int) -> list[str]:

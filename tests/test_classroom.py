@@ -151,6 +151,49 @@ def test_make_present_serves_the_lessons_with_voila_in_presentation_mode():
     assert any("ClassroomKernelManager" in a for a in voila_arguments(300, 60, 30))
 
 
+def test_the_classroom_culler_waits_for_a_page_to_connect_then_culls_it_when_closed(tmp_path):
+    """Voilà runs a page's cells, then the browser loads the page and connects to the kernel;
+    the idle clock starts when the cells finish. A kernel whose page has not connected yet is
+    kept for ``page_wait`` seconds however idle (CI once culled one after 3 s of a busy
+    machine's page load: the page's figure never came); once its page has connected and
+    closed, the kernel is culled as Jupyter culls. Real kernels, with their idle clocks set
+    back instead of waited out."""
+    import asyncio
+    from datetime import timedelta
+
+    from jupyter_server._tz import utcnow
+
+    from interp.classroom import ClassroomKernelManager
+
+    async def scenario() -> list[bool]:
+        manager = ClassroomKernelManager(
+            cull_idle_timeout=3, cull_interval=1000, page_wait=60, connection_dir=str(tmp_path)
+        )
+        alive = []
+        try:
+            loading, closed = await manager.start_kernel(), await manager.start_kernel()
+            for kernel_id in (loading, closed):
+                await manager.get_kernel(kernel_id).ready
+                manager.get_kernel(kernel_id).last_activity = utcnow() - timedelta(seconds=10)
+            manager.notify_connect(closed)  # the page connected...
+            manager.notify_disconnect(closed)  # ...and its tab was closed
+            for kernel_id in (loading, closed):
+                await manager.cull_kernel_if_idle(kernel_id)
+            alive += [loading in manager.list_kernel_ids(), closed in manager.list_kernel_ids()]
+            manager.page_wait = 5  # the wait is over: a page that never came
+            await manager.cull_kernel_if_idle(loading)  # started less than 5 s ago: kept
+            alive.append(loading in manager.list_kernel_ids())
+            manager._unconnected[loading] -= 5
+            await manager.cull_kernel_if_idle(loading)
+            alive.append(loading in manager.list_kernel_ids())
+            alive.append(not manager._unconnected)  # nothing left behind
+        finally:
+            await manager.shutdown_all()
+        return alive
+
+    assert asyncio.run(scenario()) == [True, False, True, False, True]
+
+
 def test_pip_installs_every_jupyter_setting_make_copies():
     """``make`` copies every file of ``jupyter-config/`` into the environment by hand (its
     install is editable); ``pip install`` (Binder, a hub) installs the data files
