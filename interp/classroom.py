@@ -77,8 +77,11 @@ class ClassroomKernelManager(AsyncMappingKernelManager):
         if started is not None and time.monotonic() - started < self.page_wait:
             return
         await super().cull_kernel_if_idle(kernel_id)
-        if kernel_id not in self._kernels:
-            self._unconnected.pop(kernel_id, None)
+
+    def remove_kernel(self, kernel_id: str) -> object:
+        """Forget a kernel (every shutdown ends here, as does a dead kernel's removal)."""
+        self._unconnected.pop(kernel_id, None)
+        return super().remove_kernel(kernel_id)
 
     async def _make_room(self) -> None:
         unwatched = [k for k in self.list_kernel_ids() if not self._kernel_connections.get(k)]
@@ -88,7 +91,6 @@ class ClassroomKernelManager(AsyncMappingKernelManager):
         oldest = min(unwatched, key=lambda k: self.get_kernel(k).last_activity)
         self.log.info("interp: at %d kernels, shutting down idle %s", self.max_kernels, oldest)
         await self.shutdown_kernel(oldest)
-        self._unconnected.pop(oldest, None)
 
 
 def voila_arguments(idle: int, interval: int, max_kernels: int) -> list[str]:

@@ -159,6 +159,7 @@ def test_the_classroom_culler_waits_for_a_page_to_connect_then_culls_it_when_clo
     closed, the kernel is culled as Jupyter culls. Real kernels, with their idle clocks set
     back instead of waited out."""
     import asyncio
+    import time
     from datetime import timedelta
 
     from jupyter_server._tz import utcnow
@@ -180,10 +181,12 @@ def test_the_classroom_culler_waits_for_a_page_to_connect_then_culls_it_when_clo
             for kernel_id in (loading, closed):
                 await manager.cull_kernel_if_idle(kernel_id)
             alive += [loading in manager.list_kernel_ids(), closed in manager.list_kernel_ids()]
-            manager.page_wait = 5  # the wait is over: a page that never came
-            await manager.cull_kernel_if_idle(loading)  # started less than 5 s ago: kept
+            # Started 55 s ago: still waiting for its page, kept. Started 65 s ago: the wait is
+            # over, a page that never came: culled. (Its start time set back, not waited out.)
+            manager._unconnected[loading] = time.monotonic() - 55
+            await manager.cull_kernel_if_idle(loading)
             alive.append(loading in manager.list_kernel_ids())
-            manager._unconnected[loading] -= 5
+            manager._unconnected[loading] -= 10
             await manager.cull_kernel_if_idle(loading)
             alive.append(loading in manager.list_kernel_ids())
             alive.append(not manager._unconnected)  # nothing left behind
