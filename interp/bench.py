@@ -150,7 +150,7 @@ def app_lines(repeat: int) -> list[str]:
     from interp.apps._live import Blitter, png
 
     app = apps.checkerboards()
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     pitches = iter(np.tile([14.0, 16.0], 10_000))
 

@@ -23,6 +23,7 @@ from interp.apps._glyphs import keep_glyphs
 from interp.apps._live import Blitter, Coalescer
 from interp.apps._samples import SampledImage, keep_samples
 from interp.plots import styled
+from interp.plots._base import Backdrop
 
 #: A control of each app and a step for it.
 STEPS = {
@@ -54,7 +55,7 @@ def blit_each(app, name: str, values, blitter: Blitter | None = None) -> Blitter
     check that every frame is the full redraw; the blitter (unless given, a new one, drawn
     first)."""
     if blitter is None:
-        blitter = Blitter(app.figure, app.plot.dynamic)
+        blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
         blitter.draw()
     for value in values:
         app.set(**{name: value})
@@ -67,7 +68,7 @@ def blit_each(app, name: str, values, blitter: Blitter | None = None) -> Blitter
 def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
     app = apps.ALL[name]()
     key, step = STEPS.get(name, ("pitch", 4.0))
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     for k in range(4):
         if isinstance(step, list):
@@ -98,7 +99,7 @@ def test_a_background_brought_back_is_the_full_redraw(name):
     drawn over a new background, over the one in use or over one kept for an earlier setting,
     is the full redraw pixel for pixel."""
     app = apps.ALL[name]()
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     for key, control in app.controls.items():
         if hasattr(control, "min"):
@@ -110,7 +111,7 @@ def test_a_slider_dragged_back_across_a_new_colour_scale_redraws_all_once():
     ceiling): the first crossing redraws the whole figure, the ones after it put back the
     background kept for each side."""
     app = apps.checkerboards_outside()
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     scales = []
     for pitch in (40.0, 50.0, 40.0, 50.0, 40.0):
@@ -136,7 +137,7 @@ def test_a_figure_resized_and_back_is_drawn_whole(name):
     background kept at a size the figure comes back to was put back under axes still placed
     for the other size (125247 wrong pixels in lesson 5's colour quad)."""
     app = apps.ALL[name]()
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     width, height = app.figure.get_size_inches()
     app.figure.set_size_inches(width * 1.1, height * 0.9)  # as ipympl's handle_resize does
@@ -370,6 +371,68 @@ def test_changed_limits_redraw_the_whole_figure():
     assert_is_full_redraw(figure)
 
 
+def two_panels_with_a_backdrop(text_at: tuple[float, float]):
+    """A figure of two axes: on the left a dynamic line, and a backdrop of a line, a
+    label placed at ``text_at`` (axes fraction, unclipped) and the left title; its state."""
+    figure = plt.figure(figsize=(4, 2), dpi=100)
+    left, right = figure.subplots(1, 2, gridspec_kw={"wspace": 0.6})  # apart: see below
+    right.plot([0, 1], [1, 0])
+    right.set_title("right")
+    (moving,) = left.plot([0, 1], [0, 1], zorder=3)
+    (ground,) = left.plot([0, 1], [0.5, 0.5], zorder=1)
+    label = left.annotate("slope 0", text_at, xycoords="axes fraction", zorder=1.5)
+    left.set_title("left", zorder=2)
+    shown = {"slope": 0}
+
+    def tilt(slope: float) -> None:
+        ground.set_ydata([0.5 - slope, 0.5 + slope])
+        label.set_text(f"slope {slope}")
+        shown["slope"] = slope
+
+    backdrop = Backdrop([ground, label], lambda: shown["slope"])
+    return figure, moving, tilt, backdrop, (ground, label, left.title)
+
+
+def test_a_backdrop_change_is_drawn_over_the_base_and_matches_the_full_redraw():
+    figure, moving, tilt, backdrop, expected_middle = two_panels_with_a_backdrop((0.1, 0.8))
+    blitter = Blitter(figure, [moving], backdrop)
+    blitter.draw()
+    assert blitter.base[2][:3] == list(expected_middle)  # in draw order; then the spines
+    for k, slope in enumerate([0.1, 0.2, 0.1, 0.3]):
+        moving.set_ydata([k / 4, 1 - k / 4])
+        tilt(slope)
+        blitter.draw()
+        assert_is_full_redraw(figure)
+    moving.set_ydata([0.2, 0.9])  # the dynamic line alone
+    blitter.draw()
+    assert_is_full_redraw(figure)
+    # 0.1 came back once (kept); 0.2 and 0.3 were drawn over the base.
+    assert (blitter.full_draws, blitter.backdrops, blitter.blits) == (1, 3, 2)
+
+
+def test_a_backdrop_reaching_into_another_axes_redraws_the_whole_figure():
+    """The label stands out of the left axes into the right one, which a full draw paints
+    after it: drawn over the base it would cover the right axes' line. So the figure is
+    drawn whole for each change, and only once each (not first over the base)."""
+    figure, moving, tilt, backdrop, _ = two_panels_with_a_backdrop((0.9, 0.5))
+    blitter = Blitter(figure, [moving], backdrop)
+    blitter.draw()
+    assert blitter.base is None
+    renders = []
+    original = _live.FigureCanvasAgg.draw
+    try:
+        _live.FigureCanvasAgg.draw = lambda canvas: (renders.append(1), original(canvas))[1]
+        for slope in (0.1, 0.2):
+            tilt(slope)
+            blitter.draw()
+            assert len(renders) in (1, 2) and renders.count(1) == len(renders)
+            renders.clear()
+            assert_is_full_redraw(figure)
+    finally:
+        _live.FigureCanvasAgg.draw = original
+    assert (blitter.full_draws, blitter.backdrops) == (3, 0)
+
+
 def test_lesson_4s_precision_plot_keeps_its_axes_for_every_slider():
     """The precision panel's axes and legend stay for every near plane, far plane and buffer
     the sliders reach (a curve moves, not the axes under it), so every step of those controls
@@ -377,7 +440,7 @@ def test_lesson_4s_precision_plot_keeps_its_axes_for_every_slider():
     whole figure (92 and 100 ms a step in the kernel, against 13 and 12 now)."""
     app = apps.depth()
     precision = app.plot.precision
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     blit_each(app, "buffer", [*app.controls["buffer"].options, "float32"], blitter)
     for name in ("near", "far"):
@@ -737,7 +800,7 @@ def test_a_title_drawn_as_before_is_put_back_and_a_changed_one_drawn(monkeypatch
 
     with styled():
         figure = plt.figure(figsize=(4, 2))
-        left, right = figure.subplots(1, 2)
+        left, right = figure.subplots(1, 2, gridspec_kw={"wspace": 0.6})  # apart: see below
         (curve,) = left.plot([0, 1], [0, 1])
         left.set_title("a title that stays")
         right.set_title("step 0")
@@ -769,7 +832,7 @@ def test_a_title_changing_on_every_step_is_not_checked_for_keeping(monkeypatch):
     free (which measures every label the blit draws, 8 ms a step there) is only worth doing
     for a title that stayed the same; the frames are still the full redraws."""
     app = apps.the_problem()
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     checks = []
     alone = Blitter._alone

@@ -23,7 +23,7 @@ NEW = [registry.LinearOnScreen, registry.Shader]
 @pytest.mark.parametrize("figure_class", NEW, ids=lambda c: c.name)
 def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(figure_class):
     app = App(figure_class)
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     steps = [{"pitch": 19.0}, {"pitch": 17.0}, {"yaw": 12.0}]
     choice = "left" if "left" in app.controls else "output"

@@ -241,7 +241,7 @@ STEPS = {
 @pytest.mark.parametrize("name", FIGURES_11)
 def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
     app = App(FIGURES_11[name])
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     for control, step in STEPS[name]:
         value = app.controls[control].value
@@ -254,21 +254,42 @@ def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
         assert blitter.blits >= 1, "the blit path was never taken"
 
 
-def test_a_camera_step_blits_and_a_new_ground_redraws_everything():
+def test_a_camera_step_blits_and_a_new_ground_is_drawn_over_the_base():
+    """The ground (its checks per side) is the outside view's backdrop: a change of it draws
+    the ground, its legend and the 3D axes' title over a background kept without them, not
+    the whole figure; each frame is the full redraw pixel for pixel. A drawing without the
+    backdrop (a Blitter not told of it) must redraw everything."""
     app = App(CheckerboardsOutside)
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     app.set(pitch=16.0)
     blitter.draw()
-    assert (blitter.full_draws, blitter.blits) == (1, 1)
-    app.set(frequency=9.0)  # the ground's checks: static, so the whole figure
-    blitter.draw()
-    assert blitter.full_draws == 2
+    assert (blitter.full_draws, blitter.blits, blitter.backdrops) == (1, 1, 0)
+    outside = app.plot.outside
+    middle = blitter.base[2]
+    assert middle[:4] == [outside.ground, outside.checks, outside.edges, outside.ax.title]
+    assert outside.legend in middle
+    # 13 checks a side puts the error map's colour scale at 0..8 (a full redraw, kept as the
+    # new base); 14 to 16 keep that scale, so only the ground changes.
+    for frequency in (13.0, 14.0, 13.0, 16.0, 15.0):
+        app.set(frequency=frequency)
+        blitter.draw()
+        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
+        app.figure.canvas.draw()
+        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
+    assert outside.legend.get_texts()[0].get_text() == "ground: 15 x 15 checks"
+    # 13 came back: its background was kept; 14, 16 and 15 were drawn over the base.
+    assert (blitter.full_draws, blitter.blits, blitter.backdrops) == (2, 2, 3)
+    unaware = Blitter(app.figure, app.plot.dynamic)
+    unaware.draw()
+    app.set(frequency=13.0)
+    unaware.draw()
+    assert unaware.full_draws == 2
 
 
 def test_a_slider_step_after_an_orbit_shows_the_new_viewpoint():
     app = App(OutsideViewFigure)
-    blitter = Blitter(app.figure, app.plot.dynamic)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
     app.plot.outside.ax.view_init(elev=5.0, azim=60.0, vertical_axis="y")  # the mouse orbited
     app.set(pitch=20.0)

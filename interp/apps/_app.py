@@ -182,7 +182,7 @@ class App:
         self.readout = widgets.HTML(self._readout_html())
         self._readout_handle = None
         self._readout_timer: asyncio.TimerHandle | None = None
-        self.blitter = Blitter(self.figure, self.plot.dynamic)
+        self.blitter = Blitter(self.figure, self.plot.dynamic, self.plot.backdrop)
         #: Draws the live frames of a HiDPI screen, at :data:`LIVE_RATIO` (made when needed).
         self.live_blitter: Blitter | None = None
         self._sharpen_timer: asyncio.TimerHandle | None = None
@@ -269,7 +269,7 @@ class App:
             self.blitter.draw()
             return
         if self.live_blitter is None:
-            self.live_blitter = Blitter(self.figure, self.plot.dynamic)
+            self.live_blitter = Blitter(self.figure, self.plot.dynamic, self.plot.backdrop)
         try:
             with drawn_at(self.figure.canvas, ratio):
                 self.live_blitter.draw()
