@@ -287,6 +287,25 @@ def test_a_camera_step_blits_and_a_new_ground_is_drawn_over_the_base():
     assert unaware.full_draws == 2
 
 
+def test_the_quads_slider_leaves_a_checkerboard_ground_as_it_is():
+    """The checkerboard ground does not depend on the quads the camera's view is cut into:
+    a step of that slider keeps the backdrop's state (no ground drawn again), and the
+    triangles' ground does change with it. Counting quads in the checkerboard's state made
+    steps that kept the colour scale draw the ground over the base (13 of 48 in lesson 6's
+    checkerboard app) and miss the backgrounds kept for the way back (26 full redraws instead
+    of 19, in the kernel)."""
+    app = App(OutsideViewFigure)
+    outside = app.plot.outside
+    state = outside.backdrop.state()
+    app.set(quads=9)
+    assert outside.backdrop.state() == state
+    app.set(ground="triangles")
+    state = outside.backdrop.state()
+    app.set(quads=10)
+    assert outside.backdrop.state() != state
+    assert outside.legend.get_texts()[0].get_text() == "ground: 10 x 10 quads, 200 triangles"
+
+
 def test_a_slider_step_after_an_orbit_shows_the_new_viewpoint():
     app = App(OutsideViewFigure)
     blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)

@@ -327,7 +327,7 @@ class OutsideView(Plot):
 
     def _set_ground(self, scene: object, show: str, quads: int, frequency: int) -> None:
         """Redo the (static) ground when what it shows changes, and say so in the legend."""
-        key = (show, quads, frequency)
+        key = (show, frequency if show == "checkerboard" else quads)  # what is drawn
         if self._shown.get("ground") == key:
             return
         half = LESSON_SIZE / 2
