@@ -49,6 +49,9 @@ CPU time each process and thread used (the kernel, the Jupyter server, Chromium'
 main thread, compositor, decoders, ...), read from ``/proc`` before and after, in ms a step,
 the waits between steps included. On two CPUs, the browser's share competes with the kernel's.
 
+``--slider APP=PARAM`` steps and drags an app by another of its sliders (lesson 6's checks per
+side: ``--slider checkerboards_outside=frequency``).
+
 ``--tree DIR`` measures another checkout instead of this one: its lessons, and its ``interp`` in
 the kernels (first on their PYTHONPATH) and here (for the apps' parameters). So the same script
 measures the apps before and after a change, e.g. in a worktree at an older commit
@@ -920,6 +923,14 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("--no-endpoints", action="store_true", help="skip dragging A")
     parser.add_argument(
+        "--slider",
+        action="append",
+        default=[],
+        metavar="APP=PARAM",
+        help="step and drag APP by its slider PARAM instead of the usual one"
+        " (e.g. checkerboards_outside=frequency); may be given again for other apps",
+    )
+    parser.add_argument(
         "--no-floor",
         action="store_true",
         help="skip the floors (a slider and a text label; a slider and a picture)",
@@ -940,6 +951,17 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     args.tree = args.tree.resolve()
     sys.path.insert(0, str(args.tree))  # the apps' parameters come from the checkout measured
+    for choice in args.slider:
+        app, _, param = choice.partition("=")
+        if app not in STEP_PARAM:
+            parser.error(f"--slider {choice}: no app {app!r} with sliders, in {list(STEP_PARAM)}")
+        try:
+            slider = figure_param(app, param).step is not None
+        except KeyError:
+            slider = False
+        if not slider:
+            parser.error(f"--slider {choice}: {app} has no slider {param!r}")
+        STEP_PARAM[app] = param
     if not os.path.exists(CHROMIUM):
         print(f"no Chromium at {CHROMIUM} (apt-get install chromium)", file=sys.stderr)
         return 2
