@@ -567,6 +567,46 @@ def test_a_hidpi_drag_shows_live_frames_at_ratio_1_then_the_sharp_figure(
         context.close()
 
 
+#: Each code editor's cursor layer: is its editor focused, the animation its style gives it,
+#: and how many animations run on it.
+CURSOR_LAYERS = """() => Array.from(document.querySelectorAll('.cm-cursorLayer')).map((layer) => ({
+    focused: layer.closest('.cm-editor').classList.contains('cm-focused'),
+    animation: getComputedStyle(layer).animationName,
+    running: layer.getAnimations().filter((a) => a.playState === 'running').length,
+}))"""
+
+
+def test_editors_not_focused_do_not_blink(lesson, request):
+    """CodeMirror restarts a 1.2 s cursor blink on an editor's cursor layer at each change of
+    its selection, focused or not, and Chromium ran it on the page's main thread: the page of
+    an idle lesson drew 60 frames a second (``interp.apps._live.QUIET_CURSORS_JS``). With a
+    slider focused no editor's cursor layer animates; an editor clicked into blinks."""
+    name = "checkerboards_outside"
+    page, _ = lesson(LESSON_OF[name])
+    request.node.page_on_show = page
+    root = app_root(page, name)
+    handle = slider_for(root, figure_of(name).PARAMS[CONTROL[name]].label).locator(".noUi-handle")
+    handle.focus()
+    page.keyboard.press("ArrowRight")  # a change, as a student makes
+    page.keyboard.press("ArrowLeft")
+    wait_idle(page)
+    layers = page.evaluate(CURSOR_LAYERS)
+    assert layers, "no code editor on the lesson's page"
+    blinking = [layer for layer in layers if layer["animation"] != "none" or layer["running"]]
+    assert not blinking, f"{len(blinking)} of {len(layers)} editors not focused animate"
+    editor = page.locator(f"{VISIBLE} .jp-CodeCell .cm-content").first
+    try:
+        editor.click()
+        page.wait_for_timeout(200)
+        focused = [layer for layer in page.evaluate(CURSOR_LAYERS) if layer["focused"]]
+        assert len(focused) == 1, f"{len(focused)} editors focused after a click in one"
+        assert focused[0]["animation"] != "none" and focused[0]["running"] == 1, focused
+    finally:
+        page.keyboard.press("Escape")  # command mode, as the other tests found the page
+        handle.focus()
+    assert_no_errors(page)
+
+
 @pytest.mark.parametrize("notebook", FLAKY_LESSONS)
 def test_run_all_draws_every_figure_every_time(browser, lab, request, notebook):
     """Run All in a fresh kernel, again and again: every figure appears every time. (A first
