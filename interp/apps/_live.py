@@ -62,6 +62,7 @@ from typing import TYPE_CHECKING
 import matplotlib
 import numpy as np
 from matplotlib.artist import Artist
+from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.image import AxesImage
@@ -343,8 +344,9 @@ QUIET_CURSORS_JS = """
 
 
 def static_key(figure: Figure, backdrop: frozenset[int] = frozenset()) -> tuple:
-    """What must stay the same for a saved background to still be right; the texts of a
-    legend whose id is in ``backdrop`` are left out (its backdrop's state says when it changed).
+    """What must stay the same for a saved background to still be right; an axes, or the
+    texts of a legend, whose id is in ``backdrop`` are left out (its backdrop's state says
+    when it changed).
 
     Examples
     --------
@@ -357,6 +359,9 @@ def static_key(figure: Figure, backdrop: frozenset[int] = frozenset()) -> tuple:
     """
     key: list = [tuple(figure.bbox.bounds), figure.canvas.device_pixel_ratio]
     for ax in figure.axes:
+        if id(ax) in backdrop:  # drawn anew when its backdrop's state changes
+            key.append(None)
+            continue
         legend = ax.get_legend()
         key.append(
             (
@@ -391,6 +396,41 @@ def _viewpoint(ax: object) -> tuple:
     if getattr(ax, "name", "") != "3d":
         return ()
     return (ax.elev, ax.azim, ax.roll, ax.get_zlim(), tuple(ax.get_box_aspect()), ax._focal_length)
+
+
+def _reach_of(ax: Axes, renderer: object) -> list[Bbox]:
+    """Where an axes draws: its tight box (with its labels), or, for an axes drawn without
+    its frame and axis, the boxes of the artists it shows (each clipped to its clip box).
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> figure, (left, right) = plt.subplots(1, 2)
+    >>> right.axis("off")
+    (np.float64(0.0), np.float64(1.0), np.float64(0.0), np.float64(1.0))
+    >>> renderer = figure.canvas.get_renderer()
+    >>> len(_reach_of(left, renderer)), len(_reach_of(right, renderer))   # right: empty
+    (1, 0)
+    """
+    if ax.axison and ax.get_frame_on():
+        return [ax.get_tightbbox(renderer) or ax.bbox]
+    frame = {id(ax.patch), *map(id, ax.spines.values()), *map(id, ax._axis_map.values())}
+    boxes = []
+    for child in ax.get_children():
+        if id(child) in frame or not child.get_visible():
+            continue
+        if isinstance(child, Text) and not child.get_text():
+            continue
+        box = child.get_window_extent(renderer)
+        if not np.isfinite(box.extents).all():
+            return [ax.get_tightbbox(renderer) or ax.bbox]
+        clip = child.get_clip_box() if child.get_clip_on() else None
+        if clip is not None:
+            box = Bbox.intersection(box, clip)
+            if box is None:
+                continue
+        boxes.append(box.padded(2))
+    return boxes
 
 
 class Blitter:
@@ -550,7 +590,9 @@ class Blitter:
                 path = artist.get_clip_path()
                 if clip is None and path is not None:
                     clip = path.get_fully_transformed_path().get_extents()
-            if clip is not None:
+            if isinstance(artist, Axes):  # a whole axes (a colour bar): with its labels
+                reach = artist.get_tightbbox(renderer).padded(2)
+            elif clip is not None:
                 reach = clip
             else:
                 reach = artist.get_window_extent(renderer)
@@ -590,11 +632,12 @@ class Blitter:
 
     def _others(self) -> list[tuple[object, Bbox]]:
         """Where each axes, and each of the figure's own artists, reaches (for
-        :meth:`_middle_is_alone`): measured once per base."""
+        :meth:`_middle_is_alone`): measured once per base. An axes drawn without its frame
+        and axis (one that holds a legend) reaches only as far as what it holds."""
         renderer = self.figure.canvas.get_renderer()
         others: list[tuple[object, Bbox]] = []
         for ax in self.figure.axes:
-            others.append((ax, ax.get_tightbbox(renderer) or ax.bbox))
+            others += [(ax, box) for box in _reach_of(ax, renderer)]
         for artist in self.figure.get_children():
             if artist is self.figure.patch or artist in self.figure.axes:
                 continue
