@@ -106,12 +106,14 @@ def test_a_background_brought_back_is_the_full_redraw(name):
             blit_each(app, key, sweep(control), blitter)
 
 
-def test_a_slider_dragged_back_across_a_new_colour_scale_redraws_all_once():
+@pytest.mark.parametrize("told", [True, False], ids=["backdrop", "no-backdrop"])
+def test_a_slider_dragged_back_across_a_new_colour_scale_draws_the_colour_bar_once(told):
     """Lesson 6's error scale changes between pitch 40 and 50 (its largest error's nice
-    ceiling): the first crossing redraws the whole figure, the ones after it put back the
-    background kept for each side."""
+    ceiling): the first crossing draws the colour bar alone over the base (the figure's
+    backdrop; a blitter not told of it redraws the whole figure), the ones after it put back
+    the background kept for each side. Every frame is the full redraw."""
     app = apps.checkerboards_outside()
-    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop if told else None)
     blitter.draw()
     scales = []
     for pitch in (40.0, 50.0, 40.0, 50.0, 40.0):
@@ -120,7 +122,8 @@ def test_a_slider_dragged_back_across_a_new_colour_scale_redraws_all_once():
         scales.append(app.figure.axes[-1].get_ylim())  # the colour bar's
         assert_is_full_redraw(app.figure)
     assert scales[0] != scales[1] and scales[::2] == [scales[0]] * 3
-    assert (blitter.full_draws, blitter.blits) == (2, 4)
+    expected = (1, 4, 1) if told else (2, 4, 0)
+    assert (blitter.full_draws, blitter.blits, blitter.backdrops) == expected
     assert len(blitter.kept) == 2
 
 
@@ -431,6 +434,33 @@ def test_a_backdrop_reaching_into_another_axes_redraws_the_whole_figure():
     finally:
         _live.FigureCanvasAgg.draw = original
     assert (blitter.full_draws, blitter.backdrops) == (3, 0)
+
+
+@pytest.mark.parametrize("legend_at", ["center right", "center left"])
+def test_a_backdrop_reaching_an_axes_without_frame_meets_only_what_it_holds(legend_at):
+    """An axes drawn without frame and axis (lesson 6's holds the outside view's legend)
+    draws nothing but what it holds: a backdrop label reaching into its empty part is drawn
+    over the base; one reaching its legend makes the figure drawn whole. Each frame is the
+    full redraw pixel for pixel."""
+    figure = plt.figure(figsize=(6, 2), dpi=100)
+    left, right = figure.subplots(1, 2, gridspec_kw={"wspace": 0.6})
+    right.axis("off")
+    right.plot([], [], label="entry")
+    right.legend(loc=legend_at)
+    (moving,) = left.plot([0, 1], [0, 1], zorder=3)
+    label = left.annotate("slope 0, and then more", (0.9, 0.5), xycoords="axes fraction")
+    shown = {"slope": 0}
+    blitter = Blitter(figure, [moving], Backdrop([label], lambda: shown["slope"]))
+    blitter.draw()
+    renderer = figure.canvas.get_renderer()
+    assert label.get_window_extent(renderer).x1 > right.bbox.x0, "the label must reach right"
+    for slope in (1, 2):
+        label.set_text(f"slope {slope}, and then more")
+        shown["slope"] = slope
+        blitter.draw()
+        assert_is_full_redraw(figure)
+    alone = legend_at == "center right"
+    assert (blitter.full_draws, blitter.backdrops) == ((1, 2) if alone else (3, 0))
 
 
 def test_lesson_4s_precision_plot_keeps_its_axes_for_every_slider():

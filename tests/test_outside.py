@@ -255,10 +255,11 @@ def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
 
 
 def test_a_camera_step_blits_and_a_new_ground_is_drawn_over_the_base():
-    """The ground (its checks per side) is the outside view's backdrop: a change of it draws
-    the ground, its legend and the 3D axes' title over a background kept without them, not
-    the whole figure; each frame is the full redraw pixel for pixel. A drawing without the
-    backdrop (a Blitter not told of it) must redraw everything."""
+    """The ground (its checks per side) and the error's colour bar are the figure's backdrop:
+    a change of them draws the ground, its legend, the 3D axes' title and the colour bar over
+    a background kept without them, not the whole figure; each frame is the full redraw pixel
+    for pixel. A drawing without the backdrop (a Blitter not told of it) must redraw
+    everything."""
     app = App(CheckerboardsOutside)
     blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
     blitter.draw()
@@ -269,8 +270,9 @@ def test_a_camera_step_blits_and_a_new_ground_is_drawn_over_the_base():
     middle = blitter.base[2]
     assert middle[:4] == [outside.ground, outside.checks, outside.edges, outside.ax.title]
     assert outside.legend in middle
-    # 13 checks a side puts the error map's colour scale at 0..8 (a full redraw, kept as the
-    # new base); 14 to 16 keep that scale, so only the ground changes.
+    assert middle[-1] is app.plot.panels.colorbar.ax  # the error's colour bar, drawn last
+    # 13 checks a side puts the error map's colour scale at 0..8 (the colour bar is drawn
+    # over the base with the ground); 14 to 16 keep that scale, so only the ground changes.
     for frequency in (13.0, 14.0, 13.0, 16.0, 15.0):
         app.set(frequency=frequency)
         blitter.draw()
@@ -278,8 +280,8 @@ def test_a_camera_step_blits_and_a_new_ground_is_drawn_over_the_base():
         app.figure.canvas.draw()
         np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
     assert outside.legend.get_texts()[0].get_text() == "ground: 15 x 15 checks"
-    # 13 came back: its background was kept; 14, 16 and 15 were drawn over the base.
-    assert (blitter.full_draws, blitter.blits, blitter.backdrops) == (2, 2, 3)
+    # 13 came back: its background was kept; 13, 14, 16 and 15 were drawn over the base.
+    assert (blitter.full_draws, blitter.blits, blitter.backdrops) == (1, 2, 4)
     unaware = Blitter(app.figure, app.plot.dynamic)
     unaware.draw()
     app.set(frequency=13.0)
@@ -399,3 +401,28 @@ def test_vector_handouts_hatch_the_cut_off_pieces_as_any_collection(kind):
             )
         files.append(out.getvalue().replace(b"_HatchedOnce_1", b"Poly3DCollection_1"))
     assert files[0] == files[1]
+
+
+def test_a_new_colour_scale_draws_the_colour_bar_alone_even_with_longer_labels():
+    """Lesson 6's quads slider changes the error's colour scale at most steps (19 of 48 in
+    the kernel survey, each a full redraw before the colour bar was a backdrop). At 7 quads
+    its labels have three decimals and reach past the left edge of the axes that holds the
+    outside view's legend, which draws nothing there: the colour bar is still drawn alone over
+    the base, and each frame is the full redraw pixel for pixel."""
+    app = App(CheckerboardsOutside)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
+    blitter.draw()
+    colour_bar, holder = app.plot.panels.colorbar.ax, app.plot.outside.legend.axes
+    scales = []
+    for quads in (6, 7, 20, 6):
+        app.set(quads=quads)
+        blitter.draw()
+        scales.append(app.plot.panels.error.get_clim()[1])
+        if quads == 7:
+            renderer = app.figure.canvas.get_renderer()
+            assert colour_bar.get_tightbbox(renderer).x1 > holder.bbox.x0
+        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
+        app.figure.canvas.draw()
+        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
+    assert len(set(scales)) == 3, scales
+    assert (blitter.full_draws, blitter.backdrops, blitter.blits) == (1, 3, 1)
