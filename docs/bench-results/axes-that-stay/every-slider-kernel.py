@@ -1,17 +1,21 @@
 """Every slider of every app, stepped in a kernel alone: full redraws and step times (ms).
 
 Each slider 24 steps up from its default (down where there is no room), back, and to its
-default again; a drop-down through its options three times. Run from the repository root:
+default again; a drop-down through its options three times. It measures the ``interp`` of
+the checkout it is in (a worktree's copy measures that worktree):
 ``.venv/bin/python docs/bench-results/axes-that-stay/every-slider-kernel.py [APP ...]``.
 """
 
 import sys
 import time
+from pathlib import Path
 
 import matplotlib
 import numpy as np
 
 matplotlib.use("module://ipympl.backend_nbagg")
+# The interp of the checkout this file is in (not the one the environment installed).
+sys.path.insert(0, str(Path(__file__).resolve().parents[3]))
 import ipywidgets as widgets
 
 from interp.apps import ALL
