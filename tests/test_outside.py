@@ -426,3 +426,32 @@ def test_a_new_colour_scale_draws_the_colour_bar_alone_even_with_longer_labels()
         np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
     assert len(set(scales)) == 3, scales
     assert (blitter.full_draws, blitter.backdrops, blitter.blits) == (1, 3, 1)
+
+
+def test_the_legend_over_the_base_is_put_back_while_its_texts_stay():
+    """Drawn over the base, the outside view's legend (ten entries, 12 ms to lay out and
+    draw) is put back from its picture when another part of the backdrop changed (the colour
+    bar, at each of these quads) and drawn again when its own text changes (the checks per
+    side); each frame is the full redraw pixel for pixel."""
+    app = App(CheckerboardsOutside)
+    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
+    blitter.draw()
+    legend = app.plot.outside.legend
+    drawn = []
+    original = type(legend).draw
+    legend.draw = lambda renderer: (drawn.append(1), original(legend, renderer))[1]
+    try:
+        for step in ({"quads": 6}, {"quads": 7}, {"quads": 20}, {"frequency": 9}):
+            app.plot.update(**{**app.values, **step})  # this blitter's draws alone (not App's)
+            blitter.draw()
+            blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
+            drawn_here = len(drawn)
+            del legend.draw
+            app.figure.canvas.draw()
+            legend.draw = lambda renderer: (drawn.append(1), original(legend, renderer))[1]
+            np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
+            assert drawn_here == (1 if "frequency" in step else 0), step
+            drawn.clear()
+    finally:
+        vars(legend).pop("draw", None)
+    assert (blitter.full_draws, blitter.backdrops) == (1, 4)

@@ -398,6 +398,24 @@ def _viewpoint(ax: object) -> tuple:
     return (ax.elev, ax.azim, ax.roll, ax.get_zlim(), tuple(ax.get_box_aspect()), ax._focal_length)
 
 
+def _pixels_of(box: Bbox, renderer: object) -> Bbox:
+    """The whole pixels a box touches, within the canvas.
+
+    Examples
+    --------
+    >>> from matplotlib.figure import Figure
+    >>> renderer = FigureCanvasAgg(Figure(figsize=(1, 1), dpi=100)).get_renderer()
+    >>> _pixels_of(Bbox.from_extents(-3.5, 10.2, 20.7, 150.0), renderer).extents.tolist()
+    [0.0, 10.0, 21.0, 100.0]
+    """
+    return Bbox.from_extents(
+        max(0, math.floor(box.x0)),
+        max(0, math.floor(box.y0)),
+        min(renderer.width, math.ceil(box.x1)),
+        min(renderer.height, math.ceil(box.y1)),
+    )
+
+
 def _reach_of(ax: Axes, renderer: object) -> list[Bbox]:
     """Where an axes draws: its tight box (with its labels), or, for an axes drawn without
     its frame and axis, the boxes of the artists it shows (each clipped to its clip box).
@@ -559,22 +577,46 @@ class Blitter:
         """Make the background anew from the base: the middle drawn over it (the backdrop
         changed, nothing else did). False, with the canvas to be drawn whole, if the middle
         now reaches something of another axes or of the figure."""
-        _, base, middle, others, self.layers, self._title_ids = self.base
+        _, base, middle, others, self.layers, self._title_ids, pictures = self.base
         self.figure.canvas.restore_region(base)
-        self._draw_middle(middle)
+        self._draw_middle(middle, pictures)
         if not self._middle_is_alone(middle, others):
             return False
         self.background = self._copy_all()
         self.legends, self.titles, self._reach = {}, {}, {}
         return True
 
-    def _draw_middle(self, middle: list[Artist]) -> None:
-        """Draw the middle's artists in turn; a 3D axes' collections and patches projected
-        first with its view, as its own draw does (hidden from the base's, they were not)."""
+    def _draw_middle(self, middle: list[Artist], pictures: dict) -> None:
+        """Draw the middle's artists in turn over the base; a 3D axes' collections and patches
+        projected first with its view, as its own draw does (hidden from the base's, they
+        were not).
+
+        A legend fixed in place that nothing drawn before it reaches has only the base behind
+        it: its picture there, kept in ``pictures`` (the base's) for the texts it shows, is
+        what drawing it gives. So a change of another part of the backdrop (lesson 6's colour
+        bar) puts it back instead of laying it out and drawing it again (12 ms for the
+        outside view's legend of ten entries)."""
+        renderer = self.figure.canvas.get_renderer()
+        drawn: list[Bbox | None] = []  # where the artists drawn so far reach (None: unknown)
         for artist in middle:
-            if hasattr(artist, "do_3d_projection") and artist.get_visible():
+            if not artist.get_visible():
+                continue
+            if hasattr(artist, "do_3d_projection"):
                 artist.do_3d_projection()
+            if isinstance(artist, Legend) and artist._loc != 0 and not artist.get_draggable():
+                box = _pixels_of(artist.get_window_extent(renderer).padded(2), renderer)
+                if all(b is not None and not b.overlaps(box) for b in drawn):
+                    texts = tuple(t.get_text() for t in artist.get_texts())
+                    key = (id(artist), texts, tuple(box.bounds))
+                    if key in pictures:
+                        self.figure.canvas.restore_region(pictures[key])
+                    else:
+                        self.figure.draw_artist(artist)
+                        pictures[key] = self.figure.canvas.copy_from_bbox(box)
+                    drawn.append(box)
+                    continue
             self.figure.draw_artist(artist)
+            drawn.append(self._drawn_in(artist, renderer))
 
     def _middle_is_alone(self, middle: list[Artist], others: list[tuple]) -> bool:
         """Whether nothing drawn elsewhere (``others``: another axes, the figure's own
@@ -586,24 +628,32 @@ class Blitter:
         for artist in middle:
             if not artist.get_visible():
                 continue
-            clip = None
-            if artist.get_clip_on():
-                clip = artist.get_clip_box()
-                path = artist.get_clip_path()
-                if clip is None and path is not None:
-                    clip = path.get_fully_transformed_path().get_extents()
-            if isinstance(artist, Axes):  # a whole axes (a colour bar): with its labels
-                reach = artist.get_tightbbox(renderer).padded(2)
-            elif clip is not None:
-                reach = clip
-            else:
-                reach = artist.get_window_extent(renderer)
-                if not np.isfinite(reach.extents).all():
-                    return False
-                reach = reach.padded(2)
+            reach = self._drawn_in(artist, renderer)
+            if reach is None:
+                return False
             if any(reach.overlaps(where) for owner, where in others if owner is not artist.axes):
                 return False
         return True
+
+    @staticmethod
+    def _drawn_in(artist: Artist, renderer: object) -> Bbox | None:
+        """Where a drawn artist may have set pixels: its clip box or path's extent, or else
+        its own extent two pixels wider (antialiasing); a whole axes (a colour bar) with its
+        labels; None where that is not known (an infinite extent)."""
+        if isinstance(artist, Axes):
+            return artist.get_tightbbox(renderer).padded(2)
+        clip = None
+        if artist.get_clip_on():
+            clip = artist.get_clip_box()
+            path = artist.get_clip_path()
+            if clip is None and path is not None:
+                clip = path.get_fully_transformed_path().get_extents()
+        if clip is not None:
+            return clip
+        reach = artist.get_window_extent(renderer)
+        if not np.isfinite(reach.extents).all():
+            return None
+        return reach.padded(2)
 
     def _middle(self) -> list[Artist]:
         """The backdrop's artists and the static ones stacked above them in their axes,
@@ -824,11 +874,11 @@ class Blitter:
         middle = self._middle() if static is not None else []
         if middle:
             self._render_without(self.layers + middle)
-            base, others = self._copy_all(), self._others()
-            self._draw_middle(middle)
+            base, others, pictures = self._copy_all(), self._others(), {}
+            self._draw_middle(middle, pictures)
             if self._middle_is_alone(middle, others):
                 self.background = self._copy_all()
-                self.base = (static, base, middle, others, self.layers, self._title_ids)
+                self.base = (static, base, middle, others, self.layers, self._title_ids, pictures)
                 return
             self._crowded = static
         self._render_without(self.layers)
