@@ -521,6 +521,8 @@ class Blitter:
         #: :meth:`_capture_background` made for it.
         self.kept: OrderedDict[tuple, tuple] = OrderedDict()
         self.full_draws = self.blits = self.backdrops = 0
+        #: Where each axes of the backdrop reaches, for its limits (see :meth:`_drawn_in`).
+        self._axes_reach: dict[tuple, Bbox] = {}
         for artist in dynamic or ():
             if isinstance(artist, AxesImage):
                 keep_samples(artist)  # which pixel lands where, kept per place
@@ -597,7 +599,7 @@ class Blitter:
         bar) puts it back instead of laying it out and drawing it again (12 ms for the
         outside view's legend of ten entries)."""
         renderer = self.figure.canvas.get_renderer()
-        drawn: list[Bbox | None] = []  # where the artists drawn so far reach (None: unknown)
+        drawn: list[Artist] = []
         for artist in middle:
             if not artist.get_visible():
                 continue
@@ -605,7 +607,10 @@ class Blitter:
                 artist.do_3d_projection()
             if isinstance(artist, Legend) and artist._loc != 0 and not artist.get_draggable():
                 box = _pixels_of(artist.get_window_extent(renderer).padded(2), renderer)
-                if all(b is not None and not b.overlaps(box) for b in drawn):
+                # Those of other axes are not there, or the middle is not alone (then the
+                # figure is drawn whole, and this picture is not used).
+                before = [self._drawn_in(a, renderer) for a in drawn if a.axes is artist.axes]
+                if all(b is not None and not b.overlaps(box) for b in before):
                     texts = tuple(t.get_text() for t in artist.get_texts())
                     key = (id(artist), texts, tuple(box.bounds))
                     if key in pictures:
@@ -616,7 +621,7 @@ class Blitter:
                     drawn.append(box)
                     continue
             self.figure.draw_artist(artist)
-            drawn.append(self._drawn_in(artist, renderer))
+            drawn.append(artist)
 
     def _middle_is_alone(self, middle: list[Artist], others: list[tuple]) -> bool:
         """Whether nothing drawn elsewhere (``others``: another axes, the figure's own
@@ -635,13 +640,16 @@ class Blitter:
                 return False
         return True
 
-    @staticmethod
-    def _drawn_in(artist: Artist, renderer: object) -> Bbox | None:
+    def _drawn_in(self, artist: Artist, renderer: object) -> Bbox | None:
         """Where a drawn artist may have set pixels: its clip box or path's extent, or else
         its own extent two pixels wider (antialiasing); a whole axes (a colour bar) with its
-        labels; None where that is not known (an infinite extent)."""
+        labels, kept for its limits (its tight box takes 9 ms to measure, and its labels
+        follow its limits); None where that is not known (an infinite extent)."""
         if isinstance(artist, Axes):
-            return artist.get_tightbbox(renderer).padded(2)
+            key = (id(artist), artist.get_xlim(), artist.get_ylim())
+            if key not in self._axes_reach:
+                self._axes_reach[key] = artist.get_tightbbox(renderer).padded(2)
+            return self._axes_reach[key]
         clip = None
         if artist.get_clip_on():
             clip = artist.get_clip_box()
@@ -837,6 +845,7 @@ class Blitter:
         self.key = None
         self.base = None
         self.kept.clear()
+        self._axes_reach.clear()
 
     def _keep(self) -> None:
         """Keep the background just made, and what belongs to it, for its key; forget the
