@@ -15,7 +15,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from interp import frustum
 from interp.apps._app import App
-from interp.apps._live import Blitter
+from interp.apps._live import LEGEND_PICTURES, Blitter
 from interp.camera import Camera
 from interp.clipping import PLANES
 from interp.plots.outside import VIEWS, OutsideView, _HatchedOnce
@@ -455,3 +455,7 @@ def test_the_legend_over_the_base_is_put_back_while_its_texts_stay():
     finally:
         vars(legend).pop("draw", None)
     assert (blitter.full_draws, blitter.backdrops) == (1, 4)
+    for frequency in range(10, 30):  # a picture for each; the oldest go
+        app.plot.update(**{**app.values, "frequency": frequency})
+        blitter.draw()
+    assert len(blitter.base[6]) == LEGEND_PICTURES

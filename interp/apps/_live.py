@@ -103,6 +103,9 @@ LIVE_RATIO = 1.0
 #: to (bytes): ten at lesson 6's default size and ratio 1, two at ratio 2 (see
 #: :class:`Blitter`).
 KEPT_BACKGROUNDS = 16 * 2**20
+#: How many pictures of a legend drawn over the base (one per texts it showed) a blitter
+#: keeps: 90 kB each for lesson 6's, at ratio 1.
+LEGEND_PICTURES = 16
 #: How long after a live frame of a lower ratio, with no change since, the figure is drawn at
 #: the screen's ratio (seconds): as long as :data:`IDLE`, after which a change counts as the
 #: first of a new series. Half of it (a trial) drew sharp frames in the middle of drags on a
@@ -618,6 +621,8 @@ class Blitter:
                     else:
                         self.figure.draw_artist(artist)
                         pictures[key] = self.figure.canvas.copy_from_bbox(box)
+                        if len(pictures) > LEGEND_PICTURES:  # the oldest goes
+                            del pictures[next(iter(pictures))]
                     drawn.append(box)
                     continue
             self.figure.draw_artist(artist)
