@@ -491,7 +491,7 @@ class Blitter:
     side then costs 31 ms instead of 44 (in the kernel, medians); a full redraw, which keeps
     the base too, 58 ms instead of 50. A backdrop may be a whole axes (lesson 6's colour bar,
     whose scale follows the largest error): of the 48 steps of its checks-per-side slider in
-    the kernel survey, 1 redraws the whole figure instead of 12 (p90 49-60 ms, not 60-99).
+    the kernel survey, 1 redraws the whole figure instead of 12 (p90 39-61 ms, not 82-97).
     """
 
     def __init__(
