@@ -1333,3 +1333,28 @@ def test_dragging_an_attribute_in_lesson_5_moves_the_axes_only_at_grid_lines():
     blitter = blit_each(app, "a1", [round(0.01 * k, 2) for k in range(41)])
     assert blitter.full_draws == 3
     assert [ax.get_ylim() for ax in app.figure.axes] == [(0.25, 1.25)] * 2
+
+
+def test_two_legends_of_one_axes_in_a_backdrop_are_drawn_over_the_base():
+    """Two legends fixed in one axes, both in the backdrop: the second is checked against the
+    first (drawn before it, in its axes) before its picture is put back; each frame is the
+    full redraw pixel for pixel. (The first was once kept as its box, not as itself, and
+    checking the second failed.)"""
+    figure = plt.figure(figsize=(4, 2), dpi=100)
+    ax = figure.subplots()
+    (moving,) = ax.plot([0, 1], [0, 1], zorder=6)  # above the legends: they are the middle
+    (a,) = ax.plot([], [], label="a 0")
+    (b,) = ax.plot([], [], label="b")
+    first = ax.legend(handles=[a], loc="upper left")
+    ax.add_artist(first)
+    second = ax.legend(handles=[b], loc="lower right")
+    shown = {"n": 0}
+    blitter = Blitter(figure, [moving], Backdrop([first, second], lambda: shown["n"]))
+    blitter.draw()
+    for n in (1, 2, 1):
+        first.get_texts()[0].set_text(f"a {n}")
+        shown["n"] = n
+        blitter.draw()
+        assert_is_full_redraw(figure)
+    assert blitter.base is not None and second in blitter.base[2]
+    assert blitter.full_draws == 1 and blitter.backdrops + blitter.blits == 3

@@ -623,7 +623,7 @@ class Blitter:
                         pictures[key] = self.figure.canvas.copy_from_bbox(box)
                         if len(pictures) > LEGEND_PICTURES:  # the oldest goes
                             del pictures[next(iter(pictures))]
-                    drawn.append(box)
+                    drawn.append(artist)
                     continue
             self.figure.draw_artist(artist)
             drawn.append(artist)
