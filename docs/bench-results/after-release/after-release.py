@@ -1,0 +1,115 @@
+"""What happens after a slider is let go: the kernel's log of values and frames, and the page's
+decodes and pictures, around the mouse-up of each of several drags of lesson 6's checkerboards.
+
+``.venv/bin/python docs/bench-results/after-release/after-release.py [DRAGS] [RATIO]``
+(defaults 6 and 2: a HiDPI screen). The drags are the benchmark's (``tests/bench_browser.py``:
+a move each animation frame for 3 s, 40 px back and forth on the pitch slider). Kernel times
+are ms after the page's ``interp_released`` message reached the kernel (the page's message
+that a control was let go, sent only on a screen of ratio above 1); page times are ms after
+the page's pointerup. Environment: ``TREE=DIR`` measures another checkout (its lessons and
+its ``interp``, as the benchmark's ``--tree``).
+"""
+
+import argparse
+import json
+import os
+import statistics
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[3]
+sys.path.insert(0, str(ROOT / "tests"))
+
+import bench_browser as bb  # noqa: E402
+from browser import (  # noqa: E402
+    FRAME_PROBE,
+    app_root,
+    chromium,
+    figure_canvas,
+    kernel_run,
+    open_lesson,
+    server,
+    shutdown_kernels,
+    slider_for,
+    steady_box,
+)
+from playwright.sync_api import sync_playwright  # noqa: E402
+
+NAME = "checkerboards_outside"
+
+#: Run in the kernel: log every value the pitch slider brings, every frame the app draws (with
+#: the ratio it is drawn at), every sharpening, and the page's release message.
+LOG = r"""
+import time
+_app = Out[%d]; _canvas = _app.figure.canvas; LOG = []
+def _logged(owner, attr, tag, info=lambda *a, **k: ""):
+    inner = getattr(owner, attr)
+    def outer(*a, **k):
+        t = time.monotonic(); result = inner(*a, **k)
+        LOG.append((t, time.monotonic(), tag, info(*a, **k))); return result
+    setattr(owner, attr, outer)
+_logged(_app, "_draw_frame", "frame",
+        lambda following: f"ratio {_app._frame_ratio(following)} pitch {_app.values['pitch']}")
+_logged(_app, "_sharpen", "sharpen")
+_logged(_canvas, "handle_interp_released", "released")
+_app.controls["pitch"].observe(
+    lambda change: LOG.append((time.monotonic(), time.monotonic(), "value", change["new"])),
+    names="value")
+"""
+
+#: Print the log from 120 ms before the last release message (or the last entry), and clear it.
+DUMP = r"""
+import json
+_released = [e for e in LOG if e[2] == "released"]
+_t0 = _released[-1][0] if _released else LOG[-1][0]
+print(json.dumps([(round((a - _t0) * 1e3, 1), round((b - a) * 1e3, 1), tag, str(i))
+                  for a, b, tag, i in LOG if a > _t0 - 0.12]))
+LOG.clear()
+"""
+
+PAGE = """(c) => { const up = window.__probe.lastInput('pointerup');
+  return {decodes: window.__probe.decodes.filter(d => d.t > up - 30).map(d => Math.round(d.t - up)),
+          pictures: window.__probe.of(c).filter(f => f.t > up - 30).map(f => Math.round(f.t - up))}; }"""
+
+
+def main() -> None:
+    drags = int(sys.argv[1]) if len(sys.argv) > 1 else 6
+    ratio = float(sys.argv[2]) if len(sys.argv) > 2 else 2.0
+    tree = Path(os.environ.get("TREE", ROOT))
+    settles = []
+    with tempfile.TemporaryDirectory() as tmp, server("lab", Path(tmp), tree=tree) as base:
+        with sync_playwright() as playwright:
+            browser = chromium(playwright)
+            context = browser.new_context(viewport=bb.VIEWPORT, device_scale_factor=ratio)
+            context.add_init_script(FRAME_PROBE)
+            page = bb.new_page(context)
+            counts = open_lesson(page, base, "06_checkerboards.ipynb", drawn_within=10)
+            kernel_run(page, LOG % counts[NAME])
+            root = app_root(page, NAME)
+            slider = slider_for(root, bb.figure_param(NAME, "pitch").label)
+            slider.scroll_into_view_if_needed()
+            canvas = figure_canvas(root).element_handle()
+            handle = slider.locator(".noUi-handle")
+            args = argparse.Namespace(seconds=3.0, drag="page")
+            print(f"{tree}, device pixel ratio {ratio}")
+            for k in range(drags):
+                box = steady_box(handle)
+                centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+                row = bb.measured_drag(page, canvas, centre, 40.0 if k % 2 == 0 else -40.0, args)
+                log = json.loads(kernel_run(page, DUMP).strip().splitlines()[-1])
+                seen = page.evaluate(PAGE, canvas)
+                settles.append(row["settle_ms"])
+                print(f"drag {k}: settle {row['settle_ms']:.0f} ms, "
+                      f"{row['frames_after_release']} pictures after mouse-up, "
+                      f"{row['fps']:.1f} pictures/s in the drag")
+                print(f"  page: decodes started at {seen['decodes']}, pictures at {seen['pictures']}")
+                for t, took, tag, info in log:
+                    print(f"  kernel {t:7.1f} ms  {tag:8s} {info:24s} {'took ' + str(took) if took else ''}")
+            print(f"settle, ms: {sorted(round(s) for s in settles)}, median "
+                  f"{statistics.median(settles):.0f}")
+            shutdown_kernels(page)
+
+
+if __name__ == "__main__":
+    main()
