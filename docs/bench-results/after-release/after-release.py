@@ -68,9 +68,11 @@ print(json.dumps([(round((a - _t0) * 1e3, 1), round((b - a) * 1e3, 1), tag, str(
 LOG.clear()
 """
 
-PAGE = """(c) => { const up = window.__probe.lastInput('pointerup');
-  return {decodes: window.__probe.decodes.filter(d => d.t > up - 30).map(d => Math.round(d.t - up)),
-          pictures: window.__probe.of(c).filter(f => f.t > up - 30).map(f => Math.round(f.t - up))}; }"""
+PAGE = """(c) => {
+  const up = window.__probe.lastInput('pointerup');
+  const since = (list) => list.filter(e => e.t > up - 30).map(e => Math.round(e.t - up));
+  return {decodes: since(window.__probe.decodes), pictures: since(window.__probe.of(c))};
+}"""
 
 
 def main() -> None:
@@ -100,14 +102,21 @@ def main() -> None:
                 log = json.loads(kernel_run(page, DUMP).strip().splitlines()[-1])
                 seen = page.evaluate(PAGE, canvas)
                 settles.append(row["settle_ms"])
-                print(f"drag {k}: settle {row['settle_ms']:.0f} ms, "
-                      f"{row['frames_after_release']} pictures after mouse-up, "
-                      f"{row['fps']:.1f} pictures/s in the drag")
-                print(f"  page: decodes started at {seen['decodes']}, pictures at {seen['pictures']}")
+                print(
+                    f"drag {k}: settle {row['settle_ms']:.0f} ms, "
+                    f"{row['frames_after_release']} pictures after mouse-up, "
+                    f"{row['fps']:.1f} pictures/s in the drag"
+                )
+                print(
+                    f"  page: decodes started at {seen['decodes']}, pictures at {seen['pictures']}"
+                )
                 for t, took, tag, info in log:
-                    print(f"  kernel {t:7.1f} ms  {tag:8s} {info:24s} {'took ' + str(took) if took else ''}")
-            print(f"settle, ms: {sorted(round(s) for s in settles)}, median "
-                  f"{statistics.median(settles):.0f}")
+                    spent = f"took {took}" if took else ""
+                    print(f"  kernel {t:7.1f} ms  {tag:8s} {info:24s} {spent}")
+            print(
+                f"settle, ms: {sorted(round(s) for s in settles)}, median "
+                f"{statistics.median(settles):.0f}"
+            )
             shutdown_kernels(page)
 
 
