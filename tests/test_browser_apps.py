@@ -567,6 +567,77 @@ def test_a_hidpi_drag_shows_live_frames_at_ratio_1_then_the_sharp_figure(
         context.close()
 
 
+#: Run in the page: from now on, each widget value the page sends (the state of an ipywidgets
+#: "update" message) is recorded with the page's time, ``performance.now()``.
+RECORD_SENT = r"""() => {
+  window.__sentValues = [];
+  if (window.__sentPatched) return;
+  window.__sentPatched = true;
+  const send = WebSocket.prototype.send;
+  WebSocket.prototype.send = function (data) {
+    try {
+      const text = typeof data === 'string' ? data
+        : new TextDecoder().decode(ArrayBuffer.isView(data) ? data : new Uint8Array(data));
+      const found = text.match(/"method":\s*"update",\s*"state":\s*\{"value":\s*([-0-9.e+]+)/);
+      if (found) window.__sentValues.push([performance.now(), Number(found[1])]);
+    } catch (error) {}
+    return send.call(this, data);
+  };
+}"""
+
+#: In the kernel: an observer of app {app}'s control {control} that takes 0.4 s over each
+#: value, as a slow kernel would (and its removal).
+SLOW_KERNEL = """
+import time
+def _slow(change):
+    time.sleep(0.4)
+{app}.controls[{control!r}].observe(_slow, names="value")
+"""
+FAST_KERNEL = "{app}.controls[{control!r}].unobserve(_slow, names='value')"
+
+
+def test_a_slider_let_go_sends_its_last_value_at_once(lesson, request):
+    """ipywidgets sends a widget's change only once the kernel has taken in the one before,
+    and holds newer ones back meanwhile: a slider's last value, set by a drag's last mouse
+    move, left the page only after the kernel's answer to the value before it, and was drawn
+    after it as a frame of its own. The apps' page script sends it as the mouse is let go
+    (``interp.apps._live.SEND_HELD_JS``). Here the kernel takes 0.4 s over each value, so the
+    last one would have waited about that long; it leaves the page within 100 ms of the
+    mouse-up, and the kernel, the readout and the figure end at it."""
+    name = "st_mapping"
+    page, counts = lesson(LESSON_OF[name])
+    request.node.page_on_show = page
+    app, control = f"Out[{counts[name]}]", CONTROL[name]
+    root = app_root(page, name)
+    slider = slider_for(root, figure_of(name).PARAMS[control].label)
+    slider.scroll_into_view_if_needed()
+    box = steady_box(slider.locator(".noUi-handle"))
+    x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+    page.evaluate(RECORD_SENT)
+    kernel_run(page, SLOW_KERNEL.format(app=app, control=control))
+    try:
+        page.mouse.move(x, y)
+        page.mouse.down()
+        for step in range(1, 5):  # the first move's value goes; the kernel is busy with it
+            page.mouse.move(x + 8 * step, y)
+            page.wait_for_timeout(30)
+        page.mouse.up()
+        let_go = page.evaluate("window.__probe.lastInput('pointerup')")
+        wait_idle(page, quiet_ms=800, timeout=60)
+        sent = page.evaluate("window.__sentValues")
+    finally:
+        kernel_run(page, FAST_KERNEL.format(app=app, control=control))
+    readout = float(slider.locator(".widget-readout").inner_text())
+    assert len(sent) >= 2, f"the drag sent {sent}: no value was held back"
+    when, last = sent[-1]
+    assert abs(last - readout) <= 1e-9, f"the last value sent: {last}; the slider: {readout}"
+    assert when - let_go < 100, f"the last value left the page {when - let_go:.0f} ms after"
+    kernel = float(kernel_run(page, f"print({app}.values[{control!r}])"))
+    assert abs(kernel - readout) <= 1e-9, (kernel, readout)
+    assert_is_the_apps_figure(page, figure_canvas(root), counts[name], "after the drag")
+    assert_no_errors(page)
+
+
 #: Each code editor's cursor layer: is its editor focused, the animation its style gives it,
 #: and how many animations run on it.
 CURSOR_LAYERS = """() => Array.from(document.querySelectorAll('.cm-cursorLayer')).map((layer) => ({

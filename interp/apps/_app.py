@@ -34,6 +34,7 @@ from interp.apps._live import (
     LIVE_RATIO,
     QUIET_CURSORS_JS,
     RELEASED,
+    SEND_HELD_JS,
     SHARPEN,
     Blitter,
     Coalescer,
@@ -344,7 +345,11 @@ class App:
         if _PRESENTATION["on"]:  # larger prose and controls on the whole page
             display(HTML(PRESENTATION_CSS))
         # One script: the sliders' names, and with ipympl the frames' fast path.
-        display(Javascript(SLIDER_NAMES_JS + (FRAME_JS + QUIET_CURSORS_JS if self.live else "")))
+        display(
+            Javascript(
+                SLIDER_NAMES_JS + (FRAME_JS + QUIET_CURSORS_JS + SEND_HELD_JS if self.live else "")
+            )
+        )
         if self.live:
             display(self.widget)
         else:  # a picture with alt text, the result as text, then the controls

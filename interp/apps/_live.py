@@ -345,6 +345,56 @@ QUIET_CURSORS_JS = """
 })();
 """
 
+#: Run in the page with :data:`FRAME_JS` (once): when a mouse button or a key is let go, the
+#: change a control's widget holds back is sent at once. ipywidgets sends a widget's change
+#: only when the kernel has taken in the one before (one message on its way at a time) and
+#: holds newer ones back meanwhile, so a slider's last value, set as the mouse is let go, left
+#: the page only after the kernel's answer to the one before: 24-37 ms later in lesson 6's
+#: drags, and was drawn as a frame of its own after the next-to-last one. Sent at once, it
+#: reaches the kernel with that one, which then draws the last value alone (``Coalescer``).
+#: It reaches ipywidgets' model class through ipympl's (its subclass), as :data:`FRAME_JS`
+#: does; where the model's way of holding changes back is not the one this was written against
+#: (ipywidgets 8.1), it changes nothing.
+SEND_HELD_JS = """
+(async () => {
+  const container = window._JUPYTERLAB && window._JUPYTERLAB['jupyter-matplotlib'];
+  if (!container || window.interpSendsHeld) return;
+  window.interpSendsHeld = true;
+  let proto;
+  try {
+    proto = (await container.get('./index'))().MPLCanvasModel.prototype;
+  } catch (error) {
+    return;
+  }
+  while (proto && !Object.prototype.hasOwnProperty.call(proto, 'send_sync_message')) {
+    proto = Object.getPrototypeOf(proto);  // up to ipywidgets' WidgetModel
+  }
+  if (!proto || typeof proto.sync !== 'function'
+      || typeof proto.rememberLastUpdateFor !== 'function') return;
+  const holding = new Set();  // models that hold a change back
+  const sync = proto.sync;
+  proto.sync = function (...args) {
+    const result = sync.apply(this, args);
+    if (this._msg_buffer) holding.add(this);
+    return result;
+  };
+  const sendHeld = () => {  // what ipywidgets does once the kernel has answered, done now
+    holding.forEach((model) => {
+      holding.delete(model);
+      if (!model._msg_buffer || !model.comm_live) return;
+      const sent = model.send_sync_message(model._msg_buffer, model._msg_buffer_callbacks);
+      model.rememberLastUpdateFor(sent);
+      model._msg_buffer = null;
+      model._msg_buffer_callbacks = null;
+    });
+  };
+  // At once, before the control sees the event: its last value came with the last mouse move
+  // or key press. (A task queued for later waited 27-46 ms behind the drag's frames.)
+  window.addEventListener('pointerup', sendHeld, true);
+  window.addEventListener('keyup', sendHeld, true);
+})();
+"""
+
 
 def static_key(figure: Figure, backdrop: frozenset[int] = frozenset()) -> tuple:
     """What must stay the same for a saved background to still be right; an axes, or the
