@@ -32,6 +32,8 @@ behind it. These things make that so (measured in the browser by ``make bench-br
   full redraw of every step and mouse move.
 - **Frames decoded off the page's main thread, and no picture of the picture per frame**
   (:data:`FRAME_JS`).
+- **A control's last value sent as it is let go** (:data:`SEND_HELD_JS`), not after the
+  kernel's answer to the value before: it comes with that one and is drawn in the same frame.
 - **Fewer pixels while dragging on a HiDPI screen.** At a device pixel ratio of 2, a step that
   follows another (a drag, a key held down) is drawn at ratio 1 (:data:`LIVE_RATIO`): a quarter
   of the pixels to draw, write, send, decode and copy, which the page scales up to the figure's
@@ -348,10 +350,11 @@ QUIET_CURSORS_JS = """
 #: Run in the page with :data:`FRAME_JS` (once): when a mouse button or a key is let go, the
 #: change a control's widget holds back is sent at once. ipywidgets sends a widget's change
 #: only when the kernel has taken in the one before (one message on its way at a time) and
-#: holds newer ones back meanwhile, so a slider's last value, set as the mouse is let go, left
-#: the page only after the kernel's answer to the one before: 24-37 ms later in lesson 6's
-#: drags, and was drawn as a frame of its own after the next-to-last one. Sent at once, it
-#: reaches the kernel with that one, which then draws the last value alone (``Coalescer``).
+#: holds newer ones back meanwhile, so a slider's last value, set by a drag's last mouse move,
+#: left the page only after the kernel's answer to the one before (12-45 ms after mouse-up in
+#: lesson 6's drags), and was drawn as a frame of its own after the next-to-last one. Sent at
+#: once, it reaches the kernel with that one, and the two are drawn as one frame
+#: (:class:`Coalescer`).
 #: It reaches ipywidgets' model class through ipympl's (its subclass), as :data:`FRAME_JS`
 #: does; where the model's way of holding changes back is not the one this was written against
 #: (ipywidgets 8.1), it changes nothing.
@@ -389,7 +392,7 @@ SEND_HELD_JS = """
     });
   };
   // At once, before the control sees the event: its last value came with the last mouse move
-  // or key press. (A task queued for later waited 27-46 ms behind the drag's frames.)
+  // or key press. (A task queued for later waited 18-46 ms behind the drag's frames.)
   window.addEventListener('pointerup', sendHeld, true);
   window.addEventListener('keyup', sendHeld, true);
 })();
