@@ -349,12 +349,15 @@ QUIET_CURSORS_JS = """
 
 #: Run in the page with :data:`FRAME_JS` (once): when a mouse button or a key is let go, the
 #: change a control's widget holds back is sent at once. ipywidgets sends a widget's change
-#: only when the kernel has taken in the one before (one message on its way at a time) and
-#: holds newer ones back meanwhile, so a slider's last value, set by a drag's last mouse move,
-#: left the page only after the kernel's answer to the one before (12-45 ms after mouse-up in
-#: lesson 6's drags), and was drawn as a frame of its own after the next-to-last one. Sent at
-#: once, it reaches the kernel with that one, and the two are drawn as one frame
-#: (:class:`Coalescer`).
+#: only once the kernel has handled the one before (its "idle" status for it: one message on
+#: its way at a time) and holds newer ones back meanwhile, so a slider's last value, set by a
+#: drag's last mouse move, left the page only after that (12-45 ms after mouse-up in lesson
+#: 6's drags), and was drawn as a frame of its own after the next-to-last one. Sent at once,
+#: it reaches the kernel with that one, and the two are usually drawn as one frame (when it
+#: comes within the :class:`Coalescer`'s wait; else it is drawn next, sooner than before).
+#: Any widget's held change is sent so (a text box's too, at a key's release): at most one
+#: more message on its way, in order, and ipywidgets' own bookkeeping (the pending count, the
+#: echo it expects) kept as its own flush keeps it.
 #: It reaches ipywidgets' model class through ipympl's (its subclass), as :data:`FRAME_JS`
 #: does; where the model's way of holding changes back is not the one this was written against
 #: (ipywidgets 8.1), it changes nothing.
