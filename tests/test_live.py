@@ -492,8 +492,12 @@ def test_a_live_readout_is_shown_once_the_figure_stops_changing(monkeypatch):
     steps that lasts longer than the delay, once, the words for the last; a single step, once,
     after the delay. Without an event
     loop (a script), and for a static figure, the readout follows at once."""
-    from interp.apps._app import READOUT_DELAY
+    from interp.apps import _app
 
+    # Five times the app's delay: a step of the burst (every fifth of it) stalled for 0.1 s on
+    # a loaded CI machine, and the readout came in the middle of the burst.
+    monkeypatch.setattr(_app, "READOUT_DELAY", 5 * _app.READOUT_DELAY)
+    READOUT_DELAY = _app.READOUT_DELAY
     app = apps.st_mapping()
     monkeypatch.setattr(apps.App, "live", property(lambda self: True))  # drawn as a live one
     shown = []
