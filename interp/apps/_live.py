@@ -128,6 +128,20 @@ DRAW_LOCK = threading.RLock()
 #: The class of a figure canvas whose every frame is the whole figure (see :data:`FRAME_JS`).
 WHOLE_FRAMES = "interp-whole-frames"
 
+#: Run in the page first by :data:`FRAME_JS` and :data:`SEND_HELD_JS` (once a page): ipympl's
+#: canvas model class, as the promise ``window.interpCanvasModel`` (of null where it cannot be
+#: loaded), taken from the page's module federation (``window._JUPYTERLAB``); where that has
+#: no ipympl, the promise is not made and both scripts change nothing.
+CANVAS_MODEL_JS = """
+(() => {
+  const container = window._JUPYTERLAB && window._JUPYTERLAB['jupyter-matplotlib'];
+  if (!container || window.interpCanvasModel) return;
+  window.interpCanvasModel = container.get('./index')
+    .then((factory) => factory().MPLCanvasModel || null)
+    .catch(() => null);
+})();
+"""
+
 #: Run in the page (JupyterLab, Voilà) once an app is shown; it changes how ipympl's view model
 #: (0.9 - 0.12 at least) takes in a frame, in three ways, on the browser's main thread:
 #:
@@ -153,20 +167,16 @@ WHOLE_FRAMES = "interp-whole-frames"
 #:   (``interp_scaled_frames``), a mouse button or key let go anywhere on the page within a
 #:   second of a frame's arrival sends ``interp_released`` (:data:`RELEASED`).
 #:
-#: It reaches ipympl's model class through the page's module federation
-#: (``window._JUPYTERLAB``); where that is missing, or ipympl's ``handle_binary`` is not the
-#: one this was written against, it changes nothing.
-FRAME_JS = """
+#: It reaches ipympl's model class through :data:`CANVAS_MODEL_JS` (the page's module
+#: federation, ``window._JUPYTERLAB``); where that is missing, or ipympl's ``handle_binary`` is
+#: not the one this was written against, it changes nothing.
+FRAME_JS = (
+    CANVAS_MODEL_JS
+    + """
 (async () => {
-  const container = window._JUPYTERLAB && window._JUPYTERLAB['jupyter-matplotlib'];
-  if (!container || window.interpFramesPatched) return;
+  if (!window.interpCanvasModel || window.interpFramesPatched) return;
   window.interpFramesPatched = true;
-  let model;
-  try {
-    model = (await container.get('./index'))().MPLCanvasModel;
-  } catch (error) {
-    return;  // another ipympl: frames stay as it draws them
-  }
+  const model = await window.interpCanvasModel;  // null: another ipympl, frames stay its own
   const proto = model && model.prototype;
   if (!proto || !String(proto.handle_binary).includes('toDataURL')) return;
   const handleBinary = proto.handle_binary;
@@ -326,6 +336,7 @@ FRAME_JS = """
   };
 })();
 """.replace("WHOLE_FRAMES", WHOLE_FRAMES)
+)
 
 
 #: Run in the page with :data:`FRAME_JS` (once): stops the cursor blink of JupyterLab's code
@@ -358,20 +369,17 @@ QUIET_CURSORS_JS = """
 #: Any widget's held change is sent so (a text box's too, at a key's release): at most one
 #: more message on its way, in order, and ipywidgets' own bookkeeping (the pending count, the
 #: echo it expects) kept as its own flush keeps it.
-#: It reaches ipywidgets' model class through ipympl's (its subclass), as :data:`FRAME_JS`
-#: does; where the model's way of holding changes back is not the one this was written against
-#: (ipywidgets 8.1), it changes nothing.
-SEND_HELD_JS = """
+#: It reaches ipywidgets' model class through ipympl's (its subclass, from
+#: :data:`CANVAS_MODEL_JS`); where the model's way of holding changes back is not the one this
+#: was written against (ipywidgets 8.1), it changes nothing.
+SEND_HELD_JS = (
+    CANVAS_MODEL_JS
+    + """
 (async () => {
-  const container = window._JUPYTERLAB && window._JUPYTERLAB['jupyter-matplotlib'];
-  if (!container || window.interpSendsHeld) return;
+  if (!window.interpCanvasModel || window.interpSendsHeld) return;
   window.interpSendsHeld = true;
-  let proto;
-  try {
-    proto = (await container.get('./index'))().MPLCanvasModel.prototype;
-  } catch (error) {
-    return;
-  }
+  const model = await window.interpCanvasModel;
+  let proto = model && model.prototype;
   while (proto && !Object.prototype.hasOwnProperty.call(proto, 'send_sync_message')) {
     proto = Object.getPrototypeOf(proto);  // up to ipywidgets' WidgetModel
   }
@@ -400,6 +408,7 @@ SEND_HELD_JS = """
   window.addEventListener('keyup', sendHeld, true);
 })();
 """
+)
 
 
 def static_key(figure: Figure, backdrop: frozenset[int] = frozenset()) -> tuple:
