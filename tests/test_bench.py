@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import math
 import os
 import re
@@ -92,6 +93,34 @@ def test_browser_benchmark_judges_rows_against_the_targets():
     ]
     assert bench_browser.format_verdict(rows).splitlines() == [
         "issue 12's targets (step median <= 50 ms, p90 <= 80 ms, drag >= 25 fps, settle <= 100 "
-        "ms): met by 2 of 3 rows: floor: slider -> text, depth",
+        "ms, the median of a row's releases): met by 2 of 3 rows: floor: slider -> text, depth",
         "  shader: median 68, p90 90, fps 18.1",
     ]
+
+
+def test_browser_benchmark_judges_settle_by_the_median_of_several_releases(monkeypatch):
+    """A drag row's settle is the median of ``--releases`` drags (the worst kept beside it):
+    the first of ``--seconds``, then drags of RELEASE_SECONDS, each starting where the one
+    before let go (``start + amplitude``) and going back; the first drag's other figures stay."""
+    made = []
+    settles = iter([130.0, 60.0, 80.0, 70.0, 95.0])
+
+    def measured(page, canvas, start, amplitude, args):
+        made.append((start, amplitude, args.seconds))
+        return {"fps": 30.0 + len(made), "settle_ms": next(settles), "frames_after_release": 2}
+
+    monkeypatch.setattr(bench_browser, "measured_drag", measured)
+    args = argparse.Namespace(seconds=3.0, releases=5, drag="page")
+    row = bench_browser.released_drags(None, None, (100.0, 50.0), 40.0, args)
+    short = bench_browser.RELEASE_SECONDS
+    assert made == [
+        ((100.0, 50.0), 40.0, 3.0),
+        ((140.0, 50.0), -40.0, short),
+        ((100.0, 50.0), 40.0, short),
+        ((140.0, 50.0), -40.0, short),
+        ((100.0, 50.0), 40.0, short),
+    ]
+    assert row["settle_ms"] == 80.0 and row["settle_worst_ms"] == 130.0
+    assert row["settles_ms"] == [130.0, 60.0, 80.0, 70.0, 95.0]
+    assert row["fps"] == 31.0 and row["frames_after_release"] == 2  # the first drag's
+    assert args.seconds == 3.0  # the caller's arguments unchanged
