@@ -11,10 +11,10 @@ through Playwright, at the default figure size (viewport 1500 x 1100, device pix
   shown per second while the button is down ("fps"), and the mouse moves made ("moves", a
   second);
 - settle: from mouse-up to the last change of the canvas (waiting until nothing changed for
-  0.8 s with the kernel idle), and how many pictures were shown after mouse-up; the median and
-  the worst of ``--releases`` drags (the first, then drags of 1.5 s from where the last let go
-  and back): one mouse-up is one sample of a time that varies from one to the next by tens of
-  ms;
+  0.8 s with the kernel idle), and how many pictures were shown after mouse-up;
+- each row drags ``--drags`` times, each from where the last let go and back, and gives the
+  medians of the drags' figures and the longest settle: one mouse-up is one sample of a time
+  that varies from one to the next by tens of ms;
 - final: whether the picture left on screen is the figure at the final value: the canvas's
   pixels against the same app drawn afresh in the kernel at its controls' values
   (``browser.TRUTH``), and the slider's readout against the kernel's value.
@@ -318,11 +318,11 @@ def drag(
 
 
 def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> dict:
-    """Drag (:func:`released_drags`), then: fps while the button was down, settle times,
+    """Drag (:func:`repeated_drags`), then: fps while the button was down, settle times,
     pictures after mouse-up, and whether the final picture is the figure at the final value
     (if not, and ``--save``, both pictures go to that folder as TAG-shown.png and
     TAG-truth.png)."""
-    row = released_drags(page, canvas, start, amplitude, args)
+    row = repeated_drags(page, canvas, start, amplitude, args)
     values, truth = kernel_truth(page, count)
     shown = canvas_pixels(canvas)
     wrong = mismatch(shown, truth)
@@ -339,34 +339,27 @@ def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> d
     }
 
 
-#: How long each drag after a row's first is (s): as the first (``--seconds``), a move each
-#: animation frame back and forth, let go a quarter period past a whole number of periods.
-RELEASE_SECONDS = 1.5
+def repeated_drags(page, canvas, start, amplitude, args) -> dict:
+    """:func:`measured_drag` ``args.drags`` times, each from where the last let go and back (a
+    drag lets go at ``start + amplitude``): a row of the medians of the drags' figures, with
+    the longest settle (``settle_worst_ms``) and every drag's pictures a second and settle, in
+    order (``fps_each``, ``settles_ms``); counts of pictures are the first drag's.
 
-
-def released_drags(page, canvas, start, amplitude, args) -> dict:
-    """:func:`measured_drag` for ``args.seconds``, then ``args.releases - 1`` drags of
-    :data:`RELEASE_SECONDS`, each from where the last let go and back (a drag lets go at
-    ``start + amplitude``): the first drag's row, with its settle time replaced by the median
-    of every drag's (``settle_ms``), the worst of them (``settle_worst_ms``) and all of them
-    (``settles_ms``, in order, the first drag's first).
-
-    One mouse-up is one sample of a time that varies from one release to the next by more
-    than the target's margin (lesson 6's checkerboards at ratio 2, eight drags in a row in a
-    quiet hour: 56 to 134 ms), so a row's settle is judged by the median of several."""
-    row = measured_drag(page, canvas, start, amplitude, args)
-    settles = [row["settle_ms"]]
-    short = argparse.Namespace(**{**vars(args), "seconds": RELEASE_SECONDS})
+    One drag is one sample: the same drag's settle varied from one mouse-up to the next by
+    more than the target's margin (lesson 6's checkerboards at ratio 2, eight drags in a row
+    in a quiet hour: 56 to 134 ms), so a row is judged by the medians of several."""
     x, y = start
-    for k in range(1, args.releases):
+    drags = []
+    for k in range(args.drags):
         at, move = (x + amplitude, -amplitude) if k % 2 else (x, amplitude)
-        settles.append(measured_drag(page, canvas, (at, y), move, short)["settle_ms"])
-    return {
-        **row,
-        "settle_ms": statistics.median(settles),
-        "settle_worst_ms": max(settles),
-        "settles_ms": [round(ms, 1) for ms in settles],
-    }
+        drags.append(measured_drag(page, canvas, (at, y), move, args))
+    row = dict(drags[0])
+    for key in ("fps", "moves_per_s", "settle_ms", "drag_busy", "drag_cpu_ms_per_frame"):
+        row[key] = statistics.median(drag[key] for drag in drags)
+    row["settle_worst_ms"] = max(drag["settle_ms"] for drag in drags)
+    row["fps_each"] = [round(drag["fps"], 1) for drag in drags]
+    row["settles_ms"] = [round(drag["settle_ms"], 1) for drag in drags]
+    return row
 
 
 def measured_drag(page, canvas, start, amplitude, args) -> dict:
@@ -777,7 +770,7 @@ def bench_floor_picture(
             + label,
             "floor": "picture",
             **({"cpu_ms_per_step": cpu} if cpu is not None else {}),
-            **released_drags(page, canvas.element_handle(), centre, 40.0, args),
+            **repeated_drags(page, canvas.element_handle(), centre, 40.0, args),
             "console_errors": list(page.errors),
             **summary(latencies, misses),
         }
@@ -868,7 +861,7 @@ def format_verdict(rows: list[dict]) -> str:
     met = [row["app"] for row in measured if not missed(row)]
     lines = [
         "issue 12's targets (step median <= 50 ms, p90 <= 80 ms, drag >= 25 fps, settle <= 100 "
-        f"ms, the median of a row's releases): met by {len(met)} of {len(measured)} rows"
+        f"ms; a row's drags by their medians): met by {len(met)} of {len(measured)} rows"
         + (f": {', '.join(met)}" if met else "")
     ]
     lines += [f"  {row['app']}: {', '.join(missed(row))}" for row in measured if missed(row)]
@@ -945,15 +938,9 @@ def print_fit(found: dict[str, dict[str, dict]]) -> None:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--steps", type=int, default=15, help="slider steps per app (15)")
+    parser.add_argument("--seconds", type=float, default=3.0, help="length of each drag (3 s)")
     parser.add_argument(
-        "--seconds", type=float, default=3.0, help="length of each row's first drag (3 s)"
-    )
-    parser.add_argument(
-        "--releases",
-        type=int,
-        default=5,
-        help=f"drags a row's settle is the median of: the first, then {RELEASE_SECONDS:g} s"
-        " drags (5)",
+        "--drags", type=int, default=5, help="drags per row, judged by their medians (5)"
     )
     parser.add_argument("--only", nargs="*", help="only these apps (names as in apps.ALL)")
     parser.add_argument("--json", type=Path, help="also write the rows to this JSON file")
@@ -995,8 +982,8 @@ def main(argv: list[str] | None = None) -> int:
         help="the checkout to measure: its lessons and its interp (default: this one)",
     )
     args = parser.parse_args(argv)
-    if args.releases < 1:
-        parser.error(f"--releases must be at least 1, got {args.releases}")
+    if args.drags < 1:
+        parser.error(f"--drags must be at least 1, got {args.drags}")
     args.tree = args.tree.resolve()
     sys.path.insert(0, str(args.tree))  # the apps' parameters come from the checkout measured
     for choice in args.slider:
@@ -1034,8 +1021,9 @@ def main(argv: list[str] | None = None) -> int:
         "step: key press -> first changed canvas picture (median, p90 of "
         f"{args.steps}); fps: distinct pictures/s during a {args.seconds:g} s mouse drag; "
         f"moves: mouse moves/s in it (made by {args.drag}); "
-        f"settle: mouse-up -> last change (median of {args.releases} drags; worst: the "
-        "longest); after: pictures shown after the first drag's mouse-up; busy: how busy "
+        "settle: mouse-up -> last change (worst: the longest); fps, moves, settle, busy and "
+        f"CPU/pic: medians of {args.drags} drags; after: pictures shown after the first "
+        "drag's mouse-up; busy: how busy "
         "the machine's CPUs were during the drag; CPU/pic: the machine's CPU time in it, per "
         "picture shown"
     )

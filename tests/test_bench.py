@@ -93,34 +93,44 @@ def test_browser_benchmark_judges_rows_against_the_targets():
     ]
     assert bench_browser.format_verdict(rows).splitlines() == [
         "issue 12's targets (step median <= 50 ms, p90 <= 80 ms, drag >= 25 fps, settle <= 100 "
-        "ms, the median of a row's releases): met by 2 of 3 rows: floor: slider -> text, depth",
+        "ms; a row's drags by their medians): met by 2 of 3 rows: floor: slider -> text, depth",
         "  shader: median 68, p90 90, fps 18.1",
     ]
 
 
-def test_browser_benchmark_judges_settle_by_the_median_of_several_releases(monkeypatch):
-    """A drag row's settle is the median of ``--releases`` drags (the worst kept beside it):
-    the first of ``--seconds``, then drags of RELEASE_SECONDS, each starting where the one
-    before let go (``start + amplitude``) and going back; the first drag's other figures stay."""
+def test_browser_benchmark_judges_a_row_by_the_medians_of_its_drags(monkeypatch):
+    """A drag row is ``--drags`` drags alike, each starting where the one before let go
+    (``start + amplitude``) and going back: its pictures a second, settle, mouse moves and CPU
+    figures are the drags' medians, the longest settle beside them, every drag's fps and settle
+    kept in order; counts of pictures are the first drag's."""
     made = []
     settles = iter([130.0, 60.0, 80.0, 70.0, 95.0])
+    fps = iter([24.0, 31.0, 26.0, 30.0, 28.0])
 
     def measured(page, canvas, start, amplitude, args):
-        made.append((start, amplitude, args.seconds))
-        return {"fps": 30.0 + len(made), "settle_ms": next(settles), "frames_after_release": 2}
+        made.append((start, amplitude))
+        return {
+            "fps": next(fps),
+            "moves_per_s": 60.0 - len(made),
+            "settle_ms": next(settles),
+            "frames_during": 70 + len(made),
+            "frames_after_release": len(made),
+            "drag_busy": 0.8,
+            "drag_cpu_ms_per_frame": 40.0 + len(made),
+        }
 
     monkeypatch.setattr(bench_browser, "measured_drag", measured)
-    args = argparse.Namespace(seconds=3.0, releases=5, drag="page")
-    row = bench_browser.released_drags(None, None, (100.0, 50.0), 40.0, args)
-    short = bench_browser.RELEASE_SECONDS
-    assert made == [
-        ((100.0, 50.0), 40.0, 3.0),
-        ((140.0, 50.0), -40.0, short),
-        ((100.0, 50.0), 40.0, short),
-        ((140.0, 50.0), -40.0, short),
-        ((100.0, 50.0), 40.0, short),
-    ]
+    args = argparse.Namespace(seconds=3.0, drags=5, drag="page")
+    row = bench_browser.repeated_drags(None, None, (100.0, 50.0), 40.0, args)
+    there, back = ((100.0, 50.0), 40.0), ((140.0, 50.0), -40.0)
+    assert made == [there, back, there, back, there]
     assert row["settle_ms"] == 80.0 and row["settle_worst_ms"] == 130.0
     assert row["settles_ms"] == [130.0, 60.0, 80.0, 70.0, 95.0]
-    assert row["fps"] == 31.0 and row["frames_after_release"] == 2  # the first drag's
-    assert args.seconds == 3.0  # the caller's arguments unchanged
+    assert row["fps"] == 28.0 and row["fps_each"] == [24.0, 31.0, 26.0, 30.0, 28.0]
+    assert row["moves_per_s"] == 57.0 and row["drag_cpu_ms_per_frame"] == 43.0
+    assert row["frames_during"] == 71 and row["frames_after_release"] == 1  # the first drag's
+    made.clear()
+    settles, fps = iter([50.0]), iter([33.0])
+    args.drags = 1
+    single = bench_browser.repeated_drags(None, None, (100.0, 50.0), 40.0, args)
+    assert made == [there] and single["settle_ms"] == single["settle_worst_ms"] == 50.0
