@@ -340,10 +340,11 @@ def measure_drag(page, canvas, start, amplitude, args, count, readout, tag) -> d
 
 
 def repeated_drags(page, canvas, start, amplitude, args) -> dict:
-    """:func:`measured_drag` ``args.drags`` times, each from where the last let go and back (a
-    drag lets go at ``start + amplitude``): a row of the medians of the drags' figures, with
-    the longest settle (``settle_worst_ms``) and every drag's pictures a second and settle, in
-    order (``fps_each``, ``settles_ms``); counts of pictures are the first drag's.
+    """:func:`measured_drag` ``args.drags`` times alike, from ``start``, each after the handle
+    (or endpoint) is taken back there from where the last let go (:func:`put_back`): a row of
+    the medians of the drags' figures, with the longest settle (``settle_worst_ms``) and every
+    drag's pictures a second and settle, in order (``fps_each``, ``settles_ms``); counts of
+    pictures are the first drag's.
 
     One drag is one sample: the same drag's settle varied from one mouse-up to the next by
     more than the target's margin (lesson 6's checkerboards at ratio 2, eight drags in a row
@@ -351,8 +352,9 @@ def repeated_drags(page, canvas, start, amplitude, args) -> dict:
     x, y = start
     drags = []
     for k in range(args.drags):
-        at, move = (x + amplitude, -amplitude) if k % 2 else (x, amplitude)
-        drags.append(measured_drag(page, canvas, (at, y), move, args))
+        if k:  # a drag lets go at start + amplitude
+            put_back(page, (x + amplitude, y), start)
+        drags.append(measured_drag(page, canvas, start, amplitude, args))
     row = dict(drags[0])
     for key in ("fps", "moves_per_s", "settle_ms", "drag_busy", "drag_cpu_ms_per_frame"):
         row[key] = statistics.median(drag[key] for drag in drags)
@@ -360,6 +362,18 @@ def repeated_drags(page, canvas, start, amplitude, args) -> dict:
     row["fps_each"] = [round(drag["fps"], 1) for drag in drags]
     row["settles_ms"] = [round(drag["settle_ms"], 1) for drag in drags]
     return row
+
+
+def put_back(page, where: tuple[float, float], start: tuple[float, float]) -> None:
+    """Drag what is at ``where`` (a slider's handle, an endpoint) back to ``start`` in a few
+    moves, unmeasured, and wait until the page is quiet: the next drag then covers the same
+    values as the first (a drag from ``where`` would reach twice as far from ``start``, past a
+    slider's end where its room was measured)."""
+    page.mouse.move(*where)
+    page.mouse.down()
+    page.mouse.move(*start, steps=4)
+    page.mouse.up()
+    wait_idle(page, quiet_ms=300, timeout=60)
 
 
 def measured_drag(page, canvas, start, amplitude, args) -> dict:

@@ -99,10 +99,10 @@ def test_browser_benchmark_judges_rows_against_the_targets():
 
 
 def test_browser_benchmark_judges_a_row_by_the_medians_of_its_drags(monkeypatch):
-    """A drag row is ``--drags`` drags alike, each starting where the one before let go
-    (``start + amplitude``) and going back: its pictures a second, settle, mouse moves and CPU
-    figures are the drags' medians, the longest settle beside them, every drag's fps and settle
-    kept in order; counts of pictures are the first drag's."""
+    """A drag row is ``--drags`` drags alike, from the same start, what was dragged taken back
+    there from where each let go (``start + amplitude``): its pictures a second, settle, mouse
+    moves and CPU figures are the drags' medians, the longest settle beside them, every drag's
+    fps and settle kept in order; counts of pictures are the first drag's."""
     made = []
     settles = iter([130.0, 60.0, 80.0, 70.0, 95.0])
     fps = iter([24.0, 31.0, 26.0, 30.0, 28.0])
@@ -120,17 +120,18 @@ def test_browser_benchmark_judges_a_row_by_the_medians_of_its_drags(monkeypatch)
         }
 
     monkeypatch.setattr(bench_browser, "measured_drag", measured)
+    monkeypatch.setattr(bench_browser, "put_back", lambda page, where, start: made.append(where))
     args = argparse.Namespace(seconds=3.0, drags=5, drag="page")
     row = bench_browser.repeated_drags(None, None, (100.0, 50.0), 40.0, args)
-    there, back = ((100.0, 50.0), 40.0), ((140.0, 50.0), -40.0)
-    assert made == [there, back, there, back, there]
+    drag, back = ((100.0, 50.0), 40.0), (140.0, 50.0)
+    assert made == [drag, back, drag, back, drag, back, drag, back, drag]
     assert row["settle_ms"] == 80.0 and row["settle_worst_ms"] == 130.0
     assert row["settles_ms"] == [130.0, 60.0, 80.0, 70.0, 95.0]
     assert row["fps"] == 28.0 and row["fps_each"] == [24.0, 31.0, 26.0, 30.0, 28.0]
-    assert row["moves_per_s"] == 57.0 and row["drag_cpu_ms_per_frame"] == 43.0
+    assert row["moves_per_s"] == 55.0 and row["drag_cpu_ms_per_frame"] == 45.0
     assert row["frames_during"] == 71 and row["frames_after_release"] == 1  # the first drag's
     made.clear()
     settles, fps = iter([50.0]), iter([33.0])
     args.drags = 1
     single = bench_browser.repeated_drags(None, None, (100.0, 50.0), 40.0, args)
-    assert made == [there] and single["settle_ms"] == single["settle_worst_ms"] == 50.0
+    assert made == [drag] and single["settle_ms"] == single["settle_worst_ms"] == 50.0
