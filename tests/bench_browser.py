@@ -12,9 +12,10 @@ through Playwright, at the default figure size (viewport 1500 x 1100, device pix
   second);
 - settle: from mouse-up to the last change of the canvas (waiting until nothing changed for
   0.8 s with the kernel idle), and how many pictures were shown after mouse-up;
-- each row drags ``--drags`` times, each from where the last let go and back, and gives the
-  medians of the drags' figures and the longest settle: one mouse-up is one sample of a time
-  that varies from one to the next by tens of ms;
+- each row drags ``--drags`` times alike, from the same place (what was dragged is taken back
+  there between drags, unmeasured), and gives the medians of the drags' figures and the
+  longest settle: one mouse-up is one sample of a time that varies from one to the next by
+  tens of ms;
 - final: whether the picture left on screen is the figure at the final value: the canvas's
   pixels against the same app drawn afresh in the kernel at its controls' values
   (``browser.TRUTH``), and the slider's readout against the kernel's value.
@@ -346,9 +347,10 @@ def repeated_drags(page, canvas, start, amplitude, args) -> dict:
     drag's pictures a second and settle, in order (``fps_each``, ``settles_ms``); counts of
     pictures are the first drag's.
 
-    One drag is one sample: the same drag's settle varied from one mouse-up to the next by
-    more than the target's margin (lesson 6's checkerboards at ratio 2, eight drags in a row
-    in a quiet hour: 56 to 134 ms), so a row is judged by the medians of several."""
+    One drag is one sample: the same drag's settle varies from one mouse-up to the next by
+    more than the target's margin (in one run, ``docs/bench-results/repeated-drags/``: the
+    clipping app's five drags settled in 56 to 122 ms, lesson 6's checkerboards at ratio 2 in
+    72 to 125 ms), so a row is judged by the medians of several."""
     x, y = start
     drags = []
     for k in range(args.drags):
