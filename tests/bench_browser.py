@@ -475,6 +475,19 @@ def cpu_per_step(before: dict, after: dict, steps: int) -> dict[str, float]:
     return {k: round(v, 1) for k, v in sorted(used.items(), key=lambda kv: -kv[1]) if v >= 0.5}
 
 
+def slider_drag(slider) -> tuple[tuple[float, float], float]:
+    """Where a drag of ``slider``'s handle starts (the handle's centre) and how far it goes each
+    way (px): 40, less where the track ends sooner; negative where that end is to the right."""
+    box = steady_box(slider.locator(".noUi-handle"))
+    track = slider.locator(".noUi-target").bounding_box()
+    centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
+    room = min(centre[0] - track["x"], track["x"] + track["width"] - centre[0])
+    amplitude = max(8.0, min(40.0, room - 4))
+    if centre[0] + amplitude > track["x"] + track["width"]:
+        amplitude = -amplitude
+    return centre, amplitude
+
+
 def bench_slider(page, name: str, count: int, args, label: str) -> dict:
     root = app_root(page, name)
     param_name = STEP_PARAM[name]
@@ -489,13 +502,7 @@ def bench_slider(page, name: str, count: int, args, label: str) -> dict:
     before = cpu_times() if args.cpu else {}
     latencies, misses = step_with_keys(page, handle, canvas, key, args.steps)
     cpu = cpu_per_step(before, cpu_times(), args.steps) if args.cpu else None
-    box = steady_box(handle)
-    track = slider.locator(".noUi-target").bounding_box()
-    centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
-    room = min(centre[0] - track["x"], track["x"] + track["width"] - centre[0])
-    amplitude = max(8.0, min(40.0, room - 4))
-    if centre[0] + amplitude > track["x"] + track["width"]:
-        amplitude = -amplitude
+    centre, amplitude = slider_drag(slider)
     readout = (slider.locator(".widget-readout"), param, param_name)
     row = measure_drag(page, canvas, centre, amplitude, args, count, readout, name + label)
     row.update(input=f"{label} slider '{param.label}'", **summary(latencies, misses))

@@ -36,7 +36,6 @@ from browser import (  # noqa: E402
     server,
     shutdown_kernels,
     slider_for,
-    steady_box,
 )
 from playwright.sync_api import sync_playwright  # noqa: E402
 
@@ -114,15 +113,9 @@ def main() -> None:
             slider = slider_for(root, bb.figure_param(NAME, "pitch").label)
             slider.scroll_into_view_if_needed()
             canvas = figure_canvas(root).element_handle()
-            handle = slider.locator(".noUi-handle")
             args = argparse.Namespace(seconds=3.0, drag="page")
             print(f"{tree}, device pixel ratio {ratio}")
-            box = steady_box(handle)
-            centre = (box["x"] + box["width"] / 2, box["y"] + box["height"] / 2)
-            track = slider.locator(".noUi-target").bounding_box()
-            # As the benchmark's: 40 px each way, less where the track ends sooner.
-            room = min(centre[0] - track["x"], track["x"] + track["width"] - centre[0])
-            amplitude = max(8.0, min(40.0, room - 4))
+            centre, amplitude = bb.slider_drag(slider)  # as the benchmark's drags
             for k in range(drags):
                 if k:  # the last drag let go at centre + amplitude
                     bb.put_back(page, (centre[0] + amplitude, centre[1]), centre)
