@@ -40,23 +40,12 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-# An editable install leaves out the package's data files: the Jupyter settings the package ships
-# (jupyter-config/, see pyproject.toml) are copied by hand, each unless it is there. They enable
-# the server extension interp.server (kernel messages sent to the page without delay), turn off
-# JupyterLab's busy tab icon and move its execution indicator from the notebook's toolbar to the
-# status bar (both changed on every slider step, and cost the page's main thread each time).
-JUPYTER_FILES := $(patsubst jupyter-config/%,%,$(wildcard jupyter-config/*/*.json jupyter-config/*/*/*.json))
-JUPYTER_SETTINGS := for f in $(JUPYTER_FILES); do test -e $(VENV)/etc/jupyter/$$f \
-	|| install -D -m 644 jupyter-config/$$f $(VENV)/etc/jupyter/$$f || exit 1; done
-
 $(RUNTIME): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e .
-	$(JUPYTER_SETTINGS)
 	touch $@
 
 $(VENV)/.installed-%: pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e ".[$*]"
-	$(JUPYTER_SETTINGS)
 	touch $@
 
 $(NBGRADER_DONE): pyproject.toml

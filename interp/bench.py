@@ -14,11 +14,8 @@ The three are measured interleaved (interp, llvmpipe, llvmpipe bare, interp, ...
 machine slows them alike. Then one slider step of the checkerboard lesson at 512² (both modes,
 texture lookup, error map; target: at most 30 ms), and the lesson's live app at its default size
 as the browser gets it: one slider step computed and blitted (target: at most 60 ms), and the
-whole-figure PNG frame sent to the browser, timed on its own (not with a second redraw).
-
-Everything is timed twice: first with the C allocator as Python starts it, then after
-:func:`interp._allocator.keep_freed_memory`, which the live apps turn on (it stops numpy's large
-temporaries from page-faulting back in on every step). Times are medians of repeated runs.
+whole-figure PNG frame sent to the browser (written as ipympl writes it, with Pillow), timed on
+its own (not with a second redraw). Times are medians of repeated runs.
 """
 
 from __future__ import annotations
@@ -32,13 +29,29 @@ from functools import partial
 import numpy as np
 
 import interp
-from interp._allocator import keep_freed_memory
 from interp.scenes import checker_views
 
 SIZES = (256, 512, 1024)
 RATIO_TARGET = 1.0
 STEP_TARGET_MS = 30.0
 APP_TARGET_MS = 60.0
+
+
+def png_frame(rgba: np.ndarray) -> bytes:
+    """An RGBA image as the PNG file ipympl sends the browser for a frame (Pillow's defaults).
+
+    Examples
+    --------
+    >>> png_frame(np.zeros((2, 3, 4), np.uint8))[:4]
+    b'\\x89PNG'
+    """
+    import io
+
+    from PIL import Image
+
+    with io.BytesIO() as out:
+        Image.fromarray(rgba).save(out, format="png")
+        return out.getvalue()
 
 
 def median_ms(run: Callable[[], object], repeat: int) -> float:
@@ -134,7 +147,7 @@ def table(
             f"slider step 512², both modes, {texture} texture, error map: {step:.1f} ms "
             f"(target {STEP_TARGET_MS:.0f} ms: {verdict})"
         )
-    if with_app:  # an app turns keep_freed_memory() on itself, so only in the second table
+    if with_app:
         lines.extend(app_lines(repeat))
     return lines
 
@@ -147,10 +160,10 @@ def app_lines(repeat: int) -> list[str]:
     matplotlib.use("agg")
 
     from interp import apps
-    from interp.apps._live import Blitter, png
+    from interp.apps._blit import Blitter
 
     app = apps.checkerboards()
-    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
+    blitter = Blitter(app.figure, app.plot.dynamic)
     blitter.draw()
     pitches = iter(np.tile([14.0, 16.0], 10_000))
 
@@ -159,7 +172,7 @@ def app_lines(repeat: int) -> list[str]:
         blitter.draw()
 
     def frame() -> bytes:
-        return png(np.asarray(app.figure.canvas.buffer_rgba()))
+        return png_frame(np.asarray(app.figure.canvas.buffer_rgba()))
 
     def full_redraw() -> None:
         app.set(pitch=next(pitches))
@@ -190,10 +203,7 @@ def main(argv: list[str] | None = None) -> None:
         f"numpy {np.__version__}, {platform.machine()}, OpenGL renderer: {renderer}"
     )
     print(f"scene: ground plane, {len(scene().triangles)} triangles; medians of {args.repeat} runs")
-    print("\n[default allocator]")
-    print("\n".join(table(gl, args.repeat, with_target=True)))
-    print(f"\n[keep_freed_memory() = {keep_freed_memory()}, as the live apps run]")
-    print("\n".join(table(gl, args.repeat, with_app=True)))
+    print("\n".join(table(gl, args.repeat, with_target=True, with_app=True)))
 
 
 if __name__ == "__main__":

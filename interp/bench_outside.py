@@ -1,14 +1,14 @@
-"""Speed of issue 11's figures: ``python -m interp.bench_outside``.
+"""Speed of the apps with an outside view or texture filtering: ``python -m interp.bench_outside``.
 
 For each new app it times one slider step (pitch) as a live app takes it: the figure's
-``update``, then a blitted redraw with Agg (as :class:`interp.apps._live.Blitter` does), and,
-apart, the whole-figure PNG frame sent to the browser. Beside each app that extends an older one
+``update``, then a blitted redraw with Agg (as :class:`interp.apps._blit.Blitter` does), and,
+apart, the whole-figure PNG frame sent to the browser (as ipympl writes it). Beside each app that extends an older one
 (the checkerboards and the clipping app with the outside view) it times the older app in the
 same rounds, interleaved, so that a busy machine slows both alike; and it times the outside
 view's own share of the step (its ``redraw``, inside the step). The texture-filtering app, new,
 is set beside lesson 6's checkerboard app, whose filtered/nearest switch it teaches. Target: the
 outside view or the filtering panels add at most 30 ms to a step. Medians of repeated steps,
-after warming up, with the allocator setting the live apps use.
+after warming up.
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ import time
 
 import numpy as np
 
-from interp._allocator import keep_freed_memory
+from interp.bench import png_frame
 
 #: The most the outside view or the filtering panels may add to a slider step, in ms.
 ADDED_TARGET_MS = 30.0
@@ -51,8 +51,6 @@ class _Stepper:
         self._own = 0.0
 
     def step(self, keep: bool) -> None:
-        from interp.apps._live import png
-
         self._own = 0.0
         self.steps += 1
         t0, c0 = time.perf_counter(), time.process_time()
@@ -60,7 +58,7 @@ class _Stepper:
         t1 = time.perf_counter()
         self.app.blitter.draw()
         t2, c2 = time.perf_counter(), time.process_time()
-        png(np.asarray(self.app.figure.canvas.buffer_rgba()))
+        png_frame(np.asarray(self.app.figure.canvas.buffer_rgba()))
         t3 = time.perf_counter()
         if keep:
             for name, seconds in zip(
@@ -130,7 +128,6 @@ def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(prog="python -m interp.bench_outside", description=__doc__)
     parser.add_argument("--repeat", type=int, default=15, help="rounds (default 15)")
     args = parser.parse_args(argv)
-    keep_freed_memory()  # as the live apps run
     print("\n".join(lines(args.repeat)))
 
 

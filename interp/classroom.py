@@ -9,11 +9,11 @@ class opening the app, would leave a kernel for every page ever opened, about 13
   seconds, checking every ``--interval`` seconds; a kernel whose page has not connected yet
   (the browser is still loading it: the idle clock starts when the notebook's cells finish)
   is kept for at least ``page_wait`` seconds, so a slow page never finds its kernel gone;
-- caps the live kernels at ``--max-kernels``: when a new page would pass the cap, the kernel
-  idle longest with no page connected is shut down to make room; if every kernel has a page
-  open, the new page gets "503: the server is full" instead of exhausting the machine;
-- sends kernel messages to the pages without delay (:func:`interp.server.send_at_once`: Voilà
-  loads no server extensions of its own accord).
+- caps the live kernels at ``--max-kernels``, counting the kernels still starting, so that a
+  class opening the page at once cannot pass it: when a new page would pass the cap, the kernel
+  idle longest whose page has closed is shut down to make room; if every kernel has a page open
+  or loading, the new page gets "503: the server is full" at once instead of exhausting the
+  machine.
 
 Usage: ``python -m interp.classroom [--idle S] [--interval S] [--max-kernels N] [PATH]``; other
 arguments go to Voilà unchanged.
@@ -22,6 +22,7 @@ arguments go to Voilà unchanged.
 from __future__ import annotations
 
 import argparse
+import asyncio
 import os
 import sys
 import time
@@ -31,7 +32,6 @@ from jupyter_server.services.kernels.kernelmanager import AsyncMappingKernelMana
 from tornado import web
 from traitlets import Integer
 
-from interp.server import send_at_once
 
 #: Defaults for a classroom: a closed tab's kernel goes after 5 minutes; at most 30 kernels
 #: (about 4 GB) at once.
@@ -56,13 +56,20 @@ class ClassroomKernelManager(AsyncMappingKernelManager):
     def __init__(self, **kwargs: object) -> None:
         super().__init__(**kwargs)
         self._unconnected: dict[str, float] = {}  # kernel id -> when it started
-        send_at_once()  # this is Voilà's server process: its kernel websockets, from now on
+        self._starting = 0  # kernels asked for and not started yet
+        self._admitting = asyncio.Lock()  # one page at a time is counted against the cap
 
     async def start_kernel(self, **kwargs: object) -> str:
-        """Start a kernel, first making room if the cap is reached."""
-        if self.max_kernels > 0 and len(self.list_kernel_ids()) >= self.max_kernels:
-            await self._make_room()
-        kernel_id = await super().start_kernel(**kwargs)
+        """Start a kernel, first making room if the cap is reached (503 if none can be made)."""
+        async with self._admitting:
+            if self.max_kernels > 0:
+                while len(self.list_kernel_ids()) + self._starting >= self.max_kernels:
+                    await self._make_room()
+            self._starting += 1
+        try:
+            kernel_id = await super().start_kernel(**kwargs)
+        finally:
+            self._starting -= 1
         self._unconnected[kernel_id] = time.monotonic()
         return kernel_id
 
@@ -83,8 +90,18 @@ class ClassroomKernelManager(AsyncMappingKernelManager):
         self._unconnected.pop(kernel_id, None)
         return super().remove_kernel(kernel_id)
 
+    def _waiting_for_page(self, kernel_id: str) -> bool:
+        started = self._unconnected.get(kernel_id)
+        return started is not None and time.monotonic() - started < self.page_wait
+
     async def _make_room(self) -> None:
-        unwatched = [k for k in self.list_kernel_ids() if not self._kernel_connections.get(k)]
+        """Shut down the kernel idle longest with no page (one whose page closed, or never
+        came within ``page_wait``), or refuse the new page with a 503."""
+        unwatched = [
+            k
+            for k in self.list_kernel_ids()
+            if not self._kernel_connections.get(k) and not self._waiting_for_page(k)
+        ]
         if not unwatched:
             full = f"The server is full ({self.max_kernels} pages are open): close one"
             raise web.HTTPError(503, full, reason=full)

@@ -7,13 +7,6 @@ from matplotlib.backend_bases import MouseEvent
 from interp.apps._app import App, on_slider
 from interp.plots.registry import LessonFigure
 
-#: The page sends the kernel a mouse move at most this often (ms), against ipympl's 33: a drag
-#: of A showed at most 30 pictures a second (26.5-28.3 in two interleaved pairs of runs of
-#: ``make bench-browser``, lessons 1 and 2 each), and 35.1-41.4 with 16, with the CPUs busier
-#: (88-92% against 60-67%) and settling in 32-85 ms against 32-70. The app draws only the
-#: latest move (``coalescer``), so moves that come faster than it draws build no backlog.
-MOVES_EVERY_MS = 16
-
 
 class DragEndpoints(App):
     """An app whose figure has a top view (``plot.view``, a :class:`~interp.plots.LineView`)
@@ -24,8 +17,6 @@ class DragEndpoints(App):
     def __init__(self, figure_class: type[LessonFigure]) -> None:
         super().__init__(figure_class)
         canvas = self.figure.canvas
-        if hasattr(canvas, "pan_zoom_throttle"):  # ipympl's: the page's mouse moves, at most
-            canvas.pan_zoom_throttle = MOVES_EVERY_MS  # one per this many ms
         canvas.mpl_connect("button_press_event", self._press)
         canvas.mpl_connect("motion_notify_event", self._move)
         canvas.mpl_connect("button_release_event", self._release)
@@ -48,9 +39,8 @@ class DragEndpoints(App):
             x_control.value = on_slider(x_control, float(event.ydata))
         if (w_control.value, x_control.value) == before:
             return  # within the same steps: the same picture
-        # Latest position wins, as for a slider: the browser sends a move every 16 ms
-        # (MOVES_EVERY_MS), and drawing each in turn left seconds of stale frames after the
-        # mouse was let go.
+        # Latest position wins, as for a slider: drawing each mouse move in turn would leave
+        # seconds of stale frames after the mouse was let go.
         self.coalescer.request()
 
     def _release(self, event: MouseEvent) -> None:

@@ -78,12 +78,11 @@ def label(
     moves.
 
     matplotlib places text a fraction of a pixel anywhere, and renders each glyph for its place
-    within a pixel; a live figure keeps those pictures (:mod:`interp.apps._glyphs`), but a
-    label that moves by fractions of a pixel needs new ones at every step (the approximation
-    lab's thirteen labels: forty new pictures, 4.6 ms a step). Anchored on a whole pixel, a
-    label's glyphs keep their places within a pixel wherever it goes (their offsets from the
-    anchor are the string's own), so they are the same pictures; the label is at most half a
-    pixel from where ``annotate`` puts it.
+    within a pixel, so a label moved by fractions of a pixel changes its look at every step (it
+    shimmers while a slider moves). Anchored on a whole pixel, a label's glyphs keep their
+    places within a pixel wherever it goes (their offsets from the anchor are the string's
+    own), so it looks the same everywhere; it is at most half a pixel from where ``annotate``
+    puts it.
 
     Examples
     --------
@@ -111,9 +110,9 @@ class Backdrop(NamedTuple):
     """Artists a plot changes with only some of its parameters (a ground that changes with the
     checks per side, not with the camera), and what they show now.
 
-    A live canvas keeps them in its saved background; when ``state()`` changes, it draws them
-    anew over a background kept without them, instead of redrawing the whole figure (see
-    :class:`interp.apps._live.Blitter`).
+    They are not among a plot's :attr:`~Plot.dynamic` artists: a live canvas keeps them in its
+    saved background, and redraws the whole figure when they change (see
+    :class:`interp.apps._blit.Blitter`).
 
     Examples
     --------
@@ -197,8 +196,8 @@ class Plot:
     def dynamic(self) -> list[Artist] | None:
         """The artists :meth:`redraw` changes, so a live canvas can redraw just those over a
         saved background (blitting) while nothing else changes; None if the plot cannot say
-        (then every change redraws the whole figure). Axis limits and legends that a redraw
-        changes are noticed by the canvas itself (see :mod:`interp.apps._live`)."""
+        (then every change redraws the whole figure). A change to any other artist (axis
+        limits, say) redraws the whole figure once (see :mod:`interp.apps._blit`)."""
         return None
 
     @property

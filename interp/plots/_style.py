@@ -74,7 +74,28 @@ def fit_y(ax: Axes, *values: object) -> None:
     margin = grid / 5
     low = np.floor(round((low - margin) / grid, 9)) * grid
     high = np.ceil(round((high + margin) / grid, 9)) * grid
-    ax.set_ylim(float(f"{low:.12g}"), float(f"{high:.12g}"))
+    set_limits(ax, y=(float(f"{low:.12g}"), float(f"{high:.12g}")))
+
+
+def set_limits(
+    ax: Axes, x: tuple[float, float] | None = None, y: tuple[float, float] | None = None
+) -> None:
+    """Set ``ax``'s x and y ranges to ``x`` and ``y`` (None: leave it), each only where it
+    changes: setting a range marks the axes changed even when it is the same, and a live figure
+    then redraws its axes, ticks and labels instead of only the curves that moved.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> ax = plt.subplots()[1]
+    >>> set_limits(ax, x=(0, 2)); ax.stale = False
+    >>> set_limits(ax, x=(0, 2)); ax.stale
+    False
+    """
+    if x is not None and tuple(ax.get_xlim()) != tuple(x):
+        ax.set_xlim(*x)
+    if y is not None and tuple(ax.get_ylim()) != tuple(y):
+        ax.set_ylim(*y)
 
 
 def decades(low: float, high: float) -> tuple[float, float]:

@@ -8,7 +8,7 @@ from matplotlib.patches import Rectangle
 
 from interp import depth, lerp
 from interp.plots._base import Plot
-from interp.plots._style import AFFINE, CORRECT, OTHERS, decades, markevery
+from interp.plots._style import AFFINE, CORRECT, OTHERS, decades, markevery, set_limits
 
 
 def _normalized(y: np.ndarray) -> np.ndarray:
@@ -234,8 +234,11 @@ class DepthPrecision(Plot):
             shown.append(label)
         every = np.concatenate(steps)
         low, high = decades(every.min(), every.max())
-        self.ax.set_xlim(min(self.DEPTHS[0], near * 0.1), max(self.DEPTHS[1], far))
-        self.ax.set_ylim(min(self.STEPS[0], low), max(self.STEPS[1], high))
+        set_limits(
+            self.ax,
+            x=(min(self.DEPTHS[0], near * 0.1), max(self.DEPTHS[1], far)),
+            y=(min(self.STEPS[0], low), max(self.STEPS[1], high)),
+        )
         self.ax.set_title(f"{buffer} depth buffer: n = {near:.3g}, far = {far:g}")
         legend = self.ax.get_legend()
         if legend is None or [t.get_text() for t in legend.get_texts()] != shown:

@@ -12,7 +12,7 @@ from matplotlib.collections import LineCollection
 from interp import approximation, shaders
 from interp.camera import Camera
 from interp.plots._base import Plot, label, place_pixels
-from interp.plots._style import AFFINE, CORRECT, bare, decades
+from interp.plots._style import AFFINE, CORRECT, bare, decades, set_limits
 from interp.raster import fragments, interpolate, viewport
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
 from interp.texture import checkerboard
@@ -266,8 +266,11 @@ class ApproximationLab(Plot):
         ys = np.concatenate([spans.mean_error, tess.mean_error])
         keep = (xs > 0) & (ys >= approximation.EXACT)
         if keep.any():  # whole decades, with room for the labels: small steps keep them
-            self.ax.set_xlim(*decades(xs[keep].min() / 1.5, xs[keep].max() * 3))
-            self.ax.set_ylim(*decades(ys[keep].min() / 1.5, ys[keep].max() * 1.5))
+            set_limits(
+                self.ax,
+                x=decades(xs[keep].min() / 1.5, xs[keep].max() * 3),
+                y=decades(ys[keep].min() / 1.5, ys[keep].max() * 1.5),
+            )
             exact = [
                 name
                 for name, costs in (("spans", spans), ("tessellation", tess))
@@ -275,8 +278,7 @@ class ApproximationLab(Plot):
             ]
             self.ax.set_title(f"{exact[0]}: exact at every setting here" if exact else "")
         else:  # nothing drawn, or nothing to correct: fixed axes, so history cannot show
-            self.ax.set_xlim(*self.EMPTY_X)
-            self.ax.set_ylim(*self.EMPTY_Y)
+            set_limits(self.ax, x=self.EMPTY_X, y=self.EMPTY_Y)
             self.ax.set_title("no error to plot: the plane is out of view or exact")
         self._label_points_in_view()
 

@@ -13,7 +13,15 @@ from matplotlib.collections import LineCollection
 
 from interp import lerp
 from interp.plots._base import Plot, label
-from interp.plots._style import AFFINE, CORRECT, OTHERS, fit_y, markevery, nice_ceiling
+from interp.plots._style import (
+    AFFINE,
+    CORRECT,
+    OTHERS,
+    fit_y,
+    markevery,
+    nice_ceiling,
+    set_limits,
+)
 
 Point = tuple[float, float]
 
@@ -386,7 +394,7 @@ class GapPlot(Plot):
         self.measured = (float(self.s[k]), float(gap[k]))
         self.peak.set_data([self.derived[0]], [self.derived[1]])
         self.measured_peak.set_data([self.measured[0]], [self.measured[1]])
-        self.ax.set_ylim(0, nice_ceiling(max(0.05, 1.1 * self.derived[1])))
+        set_limits(self.ax, y=(0, nice_ceiling(max(0.05, 1.1 * self.derived[1]))))
         self.ax.set_title(
             f"derived peak: s* = {self.derived[0]:.3f}, gap {self.derived[1]:.3f}\n"
             f"largest sample: s = {self.measured[0]:.3f}, gap {self.measured[1]:.3f}",

@@ -102,6 +102,12 @@ class LessonFigure(Plot):
         live text beside the app, for screen readers and for copying. Empty if there is none."""
         return ""
 
+    def inactive(self) -> dict[str, str]:
+        """The parameters that change nothing at the others' current values, each with a
+        sentence saying why (an app disables their controls and shows the sentence); empty
+        where every parameter counts."""
+        return {}
+
     @property
     def dynamic(self) -> list[Artist] | None:
         """Every artist the figure's plots change (see :attr:`Plot.dynamic`); None if one of
@@ -520,6 +526,12 @@ class Checkerboards(LessonFigure):
             quads=p["quads"],
             filtered=p["filtered"] == "filtered",
         )
+
+    def inactive(self) -> dict[str, str]:
+        if self.params["mode"] == "subdivided":
+            return {}
+        mode = self.PARAMS["mode"].label
+        return {"span": f"The span is used only when {mode} is 'subdivided'."}
 
     def readout(self) -> str:
         views = self.panels.views
