@@ -137,9 +137,10 @@ class App:
         self._notes: dict[str, widgets.Widget] = {}
         self.coalescer = Coalescer(self.refresh)
         self.blitter: Blitter | None = None
+        canvas = self.figure.canvas
         if self.live:
             self.blitter = Blitter(self.figure, self.plot.dynamic)
-            canvas = self.figure.canvas
+        if isinstance(canvas, widgets.DOMWidget):  # ipympl's
             canvas.header_visible = False
             canvas.toolbar_position = "left"
             # ipympl's view redraws its last picture whenever the widget's size changes; a view
@@ -147,6 +148,7 @@ class App:
             # exists, and a page that says it is ready gets a whole frame at once.
             canvas.manager.resize(*self.figure.bbox.size)
             canvas.on_msg(self._canvas_message)
+        if self.blitter is not None:
             with DRAW_LOCK:
                 self.blitter.draw()
         self._update_disabled()
