@@ -1,14 +1,14 @@
 """Speed of the apps with an outside view or texture filtering: ``python -m interp.bench_outside``.
 
-For each new app it times one slider step (pitch) as a live app takes it: the figure's
-``update``, then a blitted redraw with Agg (as :class:`interp.apps._blit.Blitter` does), and,
-apart, the whole-figure PNG frame sent to the browser (as ipympl writes it). Beside each app that extends an older one
-(the checkerboards and the clipping app with the outside view) it times the older app in the
-same rounds, interleaved, so that a busy machine slows both alike; and it times the outside
-view's own share of the step (its ``redraw``, inside the step). The texture-filtering app, new,
-is set beside lesson 6's checkerboard app, whose filtered/nearest switch it teaches. Target: the
-outside view or the filtering panels add at most 30 ms to a step. Medians of repeated steps,
-after warming up.
+For each app it times one slider step (pitch) as a live app takes it: the figure's ``update``,
+then a blitted redraw with Agg (as :class:`interp.apps._blit.Blitter` does), and, apart, the
+whole-figure PNG frame sent to the browser (as ipympl writes it). Beside each app that extends an
+older one (the checkerboards and the clipping app with the outside view) it times the older app
+in the same rounds, interleaved, so that a busy machine slows both alike; and it times the
+outside view's own share of the step (its ``redraw``, inside the step). The texture-filtering
+app is set beside lesson 6's checkerboard app, whose filtered/nearest switch it teaches. Target:
+the outside view or the filtering panels add at most 30 ms to a step. Medians of repeated
+steps, after warming up.
 """
 
 from __future__ import annotations

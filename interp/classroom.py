@@ -32,7 +32,6 @@ from jupyter_server.services.kernels.kernelmanager import AsyncMappingKernelMana
 from tornado import web
 from traitlets import Integer
 
-
 #: Defaults for a classroom: a closed tab's kernel goes after 5 minutes; at most 30 kernels
 #: (about 4 GB) at once.
 IDLE_SECONDS, INTERVAL_SECONDS, MAX_KERNELS = 300, 60, 30

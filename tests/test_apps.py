@@ -294,7 +294,7 @@ def test_presentation_mode_makes_bigger_apps():
         apps.presentation(False)
     small = apps.st_mapping()
     assert big.figure.get_size_inches()[0] > small.figure.get_size_inches()[0]
-    assert big.controls["w1"].layout.width == "380px"
+    assert int(big.controls["w1"].layout.width[:-2]) > int(small.controls["w1"].layout.width[:-2])
 
 
 @pytest.mark.parametrize("name", sorted(apps.ALL))
@@ -311,30 +311,6 @@ def test_every_figure_fits_a_laptop_and_a_projector(name):
     finally:
         apps.presentation(False)
     assert width <= FIT_PRESENTATION[0] and height <= FIT_PRESENTATION[1]
-
-
-def test_controls_do_not_echo_what_the_page_sends_but_send_what_the_kernel_sets():
-    """ipywidgets 8 echoes each value a page sends (one more message per mouse move of a
-    drag); an app's controls do not, while a plain slider still does, and a value set in the
-    kernel still goes to the page."""
-    if not widgets.widgets.widget.JUPYTER_WIDGETS_ECHO:
-        pytest.skip("JUPYTER_WIDGETS_ECHO is off: no widget echoes")
-    app = apps.checkerboards_outside()
-    plain = widgets.FloatSlider(1.0)
-    for widget in [*app.controls.values(), plain]:
-        sent = []
-        widget._send = lambda message, buffers=None, sent=sent: sent.append(message["method"])
-        old = widget.value
-        if isinstance(widget, widgets.Dropdown):  # a page sends a drop-down's index
-            new = next(o for o in widget.options if o != old)
-            widget.set_state({"index": widget.options.index(new)})
-        else:
-            new = widget.base**widget.max if hasattr(widget, "base") else widget.max
-            widget.set_state({"value": new})  # as a page's change arrives
-        assert widget.value == new
-        widget.value = old  # as App.set does
-        expected = ["echo_update", "update"] if widget is plain else ["update"]
-        assert sent == expected, (widget.description, sent)
 
 
 def test_unknown_control_is_named():
@@ -356,13 +332,12 @@ def test_static_display_shows_the_figure_once_and_updates_it(monkeypatch):
     monkeypatch.setattr("interp.apps._app.display", fake_display)
     app = apps.st_mapping()
     app._ipython_display_()
-    assert [kind for kind, *_ in shown] == ["display"] * 4
-    # the sliders' names for screen readers, the picture, the result as text, the controls
-    assert "aria-label" in shown[0][1].data
-    assert shown[1][1] is app.figure and isinstance(shown[3][1], widgets.Widget)
-    alt = shown[1][2]["image/png"]["alt"]
+    assert [kind for kind, *_ in shown] == ["display"] * 3
+    # the picture, the result as text, the controls: no script
+    assert shown[0][1] is app.figure and isinstance(shown[2][1], widgets.Widget)
+    alt = shown[0][2]["image/png"]["alt"]
     assert alt.startswith(app.plot.title) and app.plot.readout() in alt  # the picture's alt text
-    assert shown[2][1]._repr_html_() == app.readout.value  # the result as text
+    assert shown[1][1]._repr_html_() == app.readout.value  # the result as text
     app.controls["w2"].value = 7.0
     updates = [entry for entry in shown if entry[0] == "update"]
     assert updates[0][1] is app.figure and "alt" in updates[0][2]["image/png"]

@@ -197,17 +197,12 @@ def test_the_classroom_culler_waits_for_a_page_to_connect_then_culls_it_when_clo
     assert asyncio.run(scenario()) == [True, False, True, False, True]
 
 
-def test_pip_installs_every_jupyter_setting_make_copies():
-    """``make`` copies every file of ``jupyter-config/`` into the environment by hand (its
-    install is editable); ``pip install`` (Binder, a hub) installs the data files
-    pyproject.toml lists. Both must give the same files, each at ``etc/jupyter/`` plus its
-    path in ``jupyter-config/``."""
-    installed = {
-        f"{target}/{Path(file).name}": file
-        for target, files in PYPROJECT["tool"]["setuptools"]["data-files"].items()
-        for file in files
-    }
-    shipped = [str(path.relative_to(ROOT)) for path in (ROOT / "jupyter-config").rglob("*.json")]
-    assert sorted(installed.values()) == sorted(shipped)
-    for place, file in installed.items():
-        assert place == "etc/jupyter/" + file.removeprefix("jupyter-config/")
+def test_the_package_ships_no_jupyter_settings():
+    """Installing the package changes nobody's JupyterLab: no data files (a file under
+    ``etc/jupyter`` would enable a server extension or change settings for every notebook of
+    the environment), and no folder of settings to copy."""
+    setuptools = PYPROJECT["tool"]["setuptools"]
+    assert "data-files" not in setuptools
+    assert not (ROOT / "jupyter-config").exists()
+    makefile = (ROOT / "Makefile").read_text()
+    assert "etc/jupyter" not in makefile

@@ -1,7 +1,5 @@
-"""The figures issue 10 added, live: lessons 7 and 8 show them with ``apps.App(registry.X)``
-(interp.apps has no function for them yet, so tests/test_live.py and tests/test_apps.py, which go
-through ``apps.ALL``, do not reach them). Blitted frames equal full redraws, and any control
-values show a clean figure."""
+"""Lesson 7's and 8's figures shown with ``apps.App(registry.X)`` (not in ``apps.ALL``): any
+control values show a clean figure and a readout (tests/test_live.py checks their frames)."""
 
 from __future__ import annotations
 
@@ -12,29 +10,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from interp.apps import App
-from interp.apps._live import Blitter
 from interp.plots import registry
 
 from helpers import shown_arrays
 
 NEW = [registry.LinearOnScreen, registry.Shader]
-
-
-@pytest.mark.parametrize("figure_class", NEW, ids=lambda c: c.name)
-def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(figure_class):
-    app = App(figure_class)
-    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
-    blitter.draw()
-    steps = [{"pitch": 19.0}, {"pitch": 17.0}, {"yaw": 12.0}]
-    choice = "left" if "left" in app.controls else "output"
-    steps.append({choice: app.controls[choice].options[-1]})
-    for step in steps:
-        app.set(**step)
-        blitter.draw()
-        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
-        app.figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
-    assert blitter.blits >= 1
 
 
 def values_of(control):

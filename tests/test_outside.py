@@ -15,7 +15,6 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from interp import frustum
 from interp.apps._app import App
-from interp.apps._live import LEGEND_PICTURES, Blitter
 from interp.camera import Camera
 from interp.clipping import PLANES
 from interp.plots.outside import VIEWS, OutsideView, _HatchedOnce
@@ -28,8 +27,8 @@ from interp.plots.registry import (
 from interp.raster import fragments
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
 
-#: The figures issue 11 added, by name.
-FIGURES_11 = {
+#: The figures with an outside view or texture filtering, by name.
+OUTSIDE_FIGURES = {
     name: FIGURES[name]
     for name in (
         "outside-view",
@@ -211,113 +210,15 @@ def test_counts_match_the_clipping_view():
 # ------------------------------------------------------------------------------ the figures
 
 
-@pytest.mark.parametrize("name", FIGURES_11)
+@pytest.mark.parametrize("name", OUTSIDE_FIGURES)
 def test_figures_fit_a_notebook_and_check_their_parameters(name):
-    figure_class = FIGURES_11[name]
+    figure_class = OUTSIDE_FIGURES[name]
     assert figure_class.size[0] <= 9.0
     shown = figure_class(Figure(figsize=figure_class.size))
     with pytest.raises(TypeError, match=f"{name} has no parameter 'zoom'"):
         shown.update(zoom=2)
     assert shown.params == figure_class.defaults()
     assert isinstance(shown.readout(), str)
-
-
-#: A control of each new app and a step for it.
-STEPS = {
-    "checkerboards-outside": [("pitch", 3.0), ("height", 0.2), ("ground", "triangles")],
-    "clipping-outside": [("pitch", 3.0), ("height", -0.1), ("quads", 3)],
-    "outside-view": [("yaw", 15.0), ("ground", "triangles"), ("frequency", 3)],
-    "texture-filtering": [
-        ("pitch", 2.0),
-        ("filter", "box"),
-        ("mode", "affine"),
-        ("frequency", "8"),
-        ("scale", 4.0),
-    ],
-    "mipmap-pyramid": [("frequency", "8")],
-}
-
-
-@pytest.mark.parametrize("name", FIGURES_11)
-def test_a_blitted_frame_is_the_full_redraw_pixel_for_pixel(name):
-    app = App(FIGURES_11[name])
-    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
-    blitter.draw()
-    for control, step in STEPS[name]:
-        value = app.controls[control].value
-        app.set(**{control: step if isinstance(step, str) else value + step})
-        blitter.draw()
-        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
-        app.figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
-    if name != "mipmap-pyramid":
-        assert blitter.blits >= 1, "the blit path was never taken"
-
-
-def test_a_camera_step_blits_and_a_new_ground_is_drawn_over_the_base():
-    """The ground (its checks per side) and the error's colour bar are the figure's backdrop:
-    a change of them draws the ground, its legend, the 3D axes' title and the colour bar over
-    a background kept without them, not the whole figure; each frame is the full redraw pixel
-    for pixel. A drawing without the backdrop (a Blitter not told of it) must redraw
-    everything."""
-    app = App(CheckerboardsOutside)
-    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
-    blitter.draw()
-    app.set(pitch=16.0)
-    blitter.draw()
-    assert (blitter.full_draws, blitter.blits, blitter.backdrops) == (1, 1, 0)
-    outside = app.plot.outside
-    middle = blitter.base[2]
-    assert middle[:4] == [outside.ground, outside.checks, outside.edges, outside.ax.title]
-    assert outside.legend in middle
-    assert middle[-1] is app.plot.panels.colorbar.ax  # the error's colour bar, drawn last
-    # 13 checks a side puts the error map's colour scale at 0..8 (the colour bar is drawn
-    # over the base with the ground); 14 to 16 keep that scale, so only the ground changes.
-    for frequency in (13.0, 14.0, 13.0, 16.0, 15.0):
-        app.set(frequency=frequency)
-        blitter.draw()
-        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
-        app.figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
-    assert outside.legend.get_texts()[0].get_text() == "ground: 15 x 15 checks"
-    # 13 came back: its background was kept; 13, 14, 16 and 15 were drawn over the base.
-    assert (blitter.full_draws, blitter.blits, blitter.backdrops) == (1, 2, 4)
-    unaware = Blitter(app.figure, app.plot.dynamic)
-    unaware.draw()
-    app.set(frequency=13.0)
-    unaware.draw()
-    assert unaware.full_draws == 2
-
-
-def test_the_quads_slider_leaves_a_checkerboard_ground_as_it_is():
-    """The checkerboard ground does not depend on the quads the camera's view is cut into:
-    a step of that slider keeps the backdrop's state (no ground drawn again), and the
-    triangles' ground does change with it. Counting quads in the checkerboard's state made
-    steps that kept the colour scale draw the ground over the base (13 of 48 in lesson 6's
-    checkerboard app) and miss the backgrounds kept for the way back (26 full redraws instead
-    of 19, in the kernel)."""
-    app = App(OutsideViewFigure)
-    outside = app.plot.outside
-    state = outside.backdrop.state()
-    app.set(quads=9)
-    assert outside.backdrop.state() == state
-    app.set(ground="triangles")
-    state = outside.backdrop.state()
-    app.set(quads=10)
-    assert outside.backdrop.state() != state
-    assert outside.legend.get_texts()[0].get_text() == "ground: 10 x 10 quads, 200 triangles"
-
-
-def test_a_slider_step_after_an_orbit_shows_the_new_viewpoint():
-    app = App(OutsideViewFigure)
-    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
-    blitter.draw()
-    app.plot.outside.ax.view_init(elev=5.0, azim=60.0, vertical_axis="y")  # the mouse orbited
-    app.set(pitch=20.0)
-    blitter.draw()
-    blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
-    app.figure.canvas.draw()
-    np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
 
 
 def test_the_outside_figures_tell_the_camera_sliders_apart_from_their_own():
@@ -331,14 +232,14 @@ def test_the_outside_figures_tell_the_camera_sliders_apart_from_their_own():
     assert eye[1][0] == pytest.approx(1.0)
 
 
-@pytest.mark.parametrize("name", FIGURES_11)
+@pytest.mark.parametrize("name", OUTSIDE_FIGURES)
 def test_handouts_draw_at_print_size_byte_for_byte_the_same(name):
     import io
 
     from interp import figures, plots
 
     def svg() -> bytes:
-        figure = figures.render(FIGURES_11[name], {})
+        figure = figures.render(OUTSIDE_FIGURES[name], {})
         with io.BytesIO() as out, plots.styled():
             figure.savefig(out, format="svg", metadata=figures._metadata("svg"))
             return out.getvalue()
@@ -401,61 +302,3 @@ def test_vector_handouts_hatch_the_cut_off_pieces_as_any_collection(kind):
             )
         files.append(out.getvalue().replace(b"_HatchedOnce_1", b"Poly3DCollection_1"))
     assert files[0] == files[1]
-
-
-def test_a_new_colour_scale_draws_the_colour_bar_alone_even_with_longer_labels():
-    """Lesson 6's quads slider changes the error's colour scale at most steps (19 of 48 in
-    the kernel survey, each a full redraw before the colour bar was a backdrop). At 7 quads
-    its labels have three decimals and reach past the left edge of the axes that holds the
-    outside view's legend, which draws nothing there: the colour bar is still drawn alone over
-    the base, and each frame is the full redraw pixel for pixel."""
-    app = App(CheckerboardsOutside)
-    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
-    blitter.draw()
-    colour_bar, holder = app.plot.panels.colorbar.ax, app.plot.outside.legend.axes
-    scales = []
-    for quads in (6, 7, 20, 6):
-        app.set(quads=quads)
-        blitter.draw()
-        scales.append(app.plot.panels.error.get_clim()[1])
-        if quads == 7:
-            renderer = app.figure.canvas.get_renderer()
-            assert colour_bar.get_tightbbox(renderer).x1 > holder.bbox.x0
-        blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
-        app.figure.canvas.draw()
-        np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
-    assert len(set(scales)) == 3, scales
-    assert (blitter.full_draws, blitter.backdrops, blitter.blits) == (1, 3, 1)
-
-
-def test_the_legend_over_the_base_is_put_back_while_its_texts_stay():
-    """Drawn over the base, the outside view's legend (ten entries, 12 ms to lay out and
-    draw) is put back from its picture when another part of the backdrop changed (the colour
-    bar, at each of these quads) and drawn again when its own text changes (the checks per
-    side); each frame is the full redraw pixel for pixel."""
-    app = App(CheckerboardsOutside)
-    blitter = Blitter(app.figure, app.plot.dynamic, app.plot.backdrop)
-    blitter.draw()
-    legend = app.plot.outside.legend
-    drawn = []
-    original = type(legend).draw
-    legend.draw = lambda renderer: (drawn.append(1), original(legend, renderer))[1]
-    try:
-        for step in ({"quads": 6}, {"quads": 7}, {"quads": 20}, {"frequency": 9}):
-            app.plot.update(**{**app.values, **step})  # this blitter's draws alone (not App's)
-            blitter.draw()
-            blitted = np.asarray(app.figure.canvas.buffer_rgba()).copy()
-            drawn_here = len(drawn)
-            del legend.draw
-            app.figure.canvas.draw()
-            legend.draw = lambda renderer: (drawn.append(1), original(legend, renderer))[1]
-            np.testing.assert_array_equal(blitted, np.asarray(app.figure.canvas.buffer_rgba()))
-            assert drawn_here == (1 if "frequency" in step else 0), step
-            drawn.clear()
-    finally:
-        vars(legend).pop("draw", None)
-    assert (blitter.full_draws, blitter.backdrops) == (1, 4)
-    for frequency in range(10, 30):  # a picture for each; the oldest go
-        app.plot.update(**{**app.values, "frequency": frequency})
-        blitter.draw()
-    assert len(blitter.base[6]) == LEGEND_PICTURES

@@ -13,7 +13,6 @@ from matplotlib.figure import Figure
 
 import interp
 from interp import plots
-from interp.apps._glyphs import keep_glyphs
 from interp.plots._base import Plot, label
 from interp.plots.registry import BARYCENTRIC_CAMERA, FIGURES, midpoint_title
 from interp.raster import viewport
@@ -199,22 +198,6 @@ def test_a_label_reaches_outside_its_axes_as_annotate_does():
     top = round(figure.bbox.height - ax.bbox.y1)  # the axes' top edge, in rows from the top
     right = round(ax.bbox.x1)
     assert (pixels[: top - 2, right + 2 :] < 128).sum() > 20  # ink above and right of it
-
-
-def test_a_label_that_moves_is_drawn_from_the_glyphs_kept():
-    """A label following a point by fractions of a pixel needs no new glyph pictures in a live
-    figure: on whole pixels its glyphs are the same pictures wherever it goes."""
-    figure = FigureCanvasAgg(Figure(dpi=100)).figure
-    ax = figure.subplots()
-    note = label(ax, "n=16", (0.5, 0.5), (4, 2))
-    renderer = figure.canvas.get_renderer()
-    assert keep_glyphs(renderer, figure)
-    figure.draw(renderer)
-    kept = len(renderer.glyphs)
-    for x in np.linspace(0.2, 0.8, 25):
-        note.xy = (x, x / 3)
-        note.draw(renderer)
-    assert len(renderer.glyphs) == kept
 
 
 @pytest.mark.parametrize(

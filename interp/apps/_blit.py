@@ -120,7 +120,7 @@ def layers(figure: Figure, dynamic: Iterable[Artist]) -> list[Artist]:
     # An axes drawn whole draws its own children: none of them may be animated.
     return [
         a
-        for (container, _), part in zip(firsts.values(), parts)
+        for (container, _), part in zip(firsts.values(), parts, strict=True)
         if id(container) not in whole
         for a in part
     ]

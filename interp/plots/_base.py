@@ -8,8 +8,6 @@ with, so a typo raises instead of being silently ignored.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Hashable
-from typing import NamedTuple
 
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
@@ -106,47 +104,6 @@ def label(
     return note
 
 
-class Backdrop(NamedTuple):
-    """Artists a plot changes with only some of its parameters (a ground that changes with the
-    checks per side, not with the camera), and what they show now.
-
-    They are not among a plot's :attr:`~Plot.dynamic` artists: a live canvas keeps them in its
-    saved background, and redraws the whole figure when they change (see
-    :class:`interp.apps._blit.Blitter`).
-
-    Examples
-    --------
-    >>> from matplotlib.lines import Line2D
-    >>> shown = {"n": 1}
-    >>> backdrop = Backdrop([Line2D([], [])], lambda: shown["n"])
-    >>> backdrop.state()
-    1
-    """
-
-    artists: list[Artist]
-    #: Changes whenever any of ``artists`` changes (equal values: nothing changed).
-    state: Callable[[], Hashable]
-
-
-def joined(backdrops: list[Backdrop | None]) -> Backdrop | None:
-    """One backdrop for several plots' (None where none has one).
-
-    Examples
-    --------
-    >>> from matplotlib.lines import Line2D
-    >>> one, two = Backdrop([Line2D([], [])], lambda: 1), Backdrop([Line2D([], [])], lambda: 2)
-    >>> both = joined([one, None, two])
-    >>> len(both.artists), both.state()
-    (2, (1, 2))
-    >>> joined([None]) is None
-    True
-    """
-    parts = [b for b in backdrops if b is not None]
-    if not parts:
-        return None
-    return Backdrop([a for b in parts for a in b.artists], lambda: tuple(b.state() for b in parts))
-
-
 class Plot:
     """Base of the figure objects in :mod:`interp.plots`.
 
@@ -198,10 +155,4 @@ class Plot:
         saved background (blitting) while nothing else changes; None if the plot cannot say
         (then every change redraws the whole figure). A change to any other artist (axis
         limits, say) redraws the whole figure once (see :mod:`interp.apps._blit`)."""
-        return None
-
-    @property
-    def backdrop(self) -> Backdrop | None:
-        """The artists :meth:`redraw` changes with only some parameters, kept out of
-        :attr:`dynamic` (see :class:`Backdrop`); None if there are none."""
         return None

@@ -11,7 +11,7 @@ from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
 
 from interp.camera import Camera
-from interp.plots._base import Backdrop, Plot, place_pixels
+from interp.plots._base import Plot, place_pixels
 from interp.plots._style import bare, nice_ceiling
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, CheckerViews, checker_views, ground_plane
 
@@ -122,12 +122,6 @@ class CheckerPanels(Plot):
     def dynamic(self) -> list:
         images = [self.approximate, self.correct, self.error]
         return [*images, *(ax.title for ax in self.axes)]
-
-    @property
-    def backdrop(self) -> Backdrop:
-        """The error's colour bar, which changes with its colour scale alone (a live canvas
-        draws it anew over a background kept without it, not the whole figure)."""
-        return Backdrop([self.colorbar.ax], lambda: tuple(self.error.get_clim()))
 
 
 #: The values of u and v the contour lines of :class:`UVImages` follow.

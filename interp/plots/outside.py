@@ -21,7 +21,7 @@ from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
 from interp import frustum
 from interp.camera import Camera
-from interp.plots._base import Backdrop, Plot
+from interp.plots._base import Plot
 from interp.plots._style import AFFINE, CORRECT, OTHERS
 from interp.scenes import LESSON_CAMERA, LESSON_SIZE, ground_plane
 
@@ -114,8 +114,8 @@ class OutsideView(Plot):
     Notes
     -----
     The ground changes only with ``show``, ``quads`` and ``frequency``, and then so does its
-    legend entry: they are the :attr:`backdrop`, not :attr:`dynamic` (a live canvas draws them
-    anew over a background kept without them). Everything else is redrawn from ``camera``.
+    legend entry: they are not :attr:`dynamic` (a live canvas keeps them in its background and
+    draws the whole figure when they change). Everything else is redrawn from ``camera``.
 
     Examples
     --------
@@ -394,13 +394,6 @@ class OutsideView(Plot):
             self.new_vertices,
             self.eye,
         ]
-
-    @property
-    def backdrop(self) -> Backdrop:
-        """The ground, its checks or triangles, and the legend that names them."""
-        return Backdrop(
-            [self.ground, self.checks, self.edges, self.legend], lambda: self._shown["ground"]
-        )
 
     def view_angles(self) -> tuple[float, float, float]:
         """(elevation, azimuth, roll) the axes show now (after any orbiting by the mouse)."""

@@ -20,7 +20,7 @@ from matplotlib.artist import Artist
 from matplotlib.figure import Figure, SubFigure
 
 from interp import approximation, depth, lerp, mipmap, mistakes
-from interp.plots._base import Backdrop, Plot, joined
+from interp.plots._base import Plot
 from interp.plots.attributes import ClipVertexMistake, ColourTriangle, MistakesAlongALine
 from interp.plots.checker import CheckerPanels, UVImages
 from interp.plots.depth import DepthAcross, DepthPrecision
@@ -120,18 +120,6 @@ class LessonFigure(Plot):
                         return None
                     artists += plot.dynamic
         return artists
-
-    @property
-    def backdrop(self) -> Backdrop | None:
-        """The figure's plots' backdrops as one (see :class:`Backdrop`); None if none has one."""
-        return joined(
-            [
-                plot.backdrop
-                for value in vars(self).values()
-                for plot in (value if isinstance(value, list) else [value])
-                if isinstance(plot, Plot)
-            ]
-        )
 
 
 # ---------------------------------------------------------------------------- lessons 1-3
