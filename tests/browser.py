@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import base64
 import contextlib
-import ctypes
 import http.client
 import io
 import json
@@ -183,68 +182,6 @@ def _wait_for_log(text: str, process: subprocess.Popen, log: Path, seconds: floa
             raise RuntimeError(f"server exited:\n{log.read_text()[-3000:]}")
         time.sleep(0.2)
     raise RuntimeError(f"the server never said it runs at {text}:\n{log.read_text()[-3000:]}")
-
-
-# --- a server's sockets (Linux) ---------------------------------------------------------------
-
-#: Linux's system call number of pidfd_getfd on x86-64 and arm64 (both 438).
-PIDFD_GETFD = 438
-
-
-def _tcp_sockets() -> Iterator[tuple[int, int, str, str]]:
-    """Every TCP socket of this machine (IPv4 and IPv6): local port, remote port, state (01:
-    established) and inode (0 for one closing), from Linux's /proc/net tables."""
-    for table in ("/proc/net/tcp", "/proc/net/tcp6"):
-        for line in Path(table).read_text().splitlines()[1:]:
-            fields = line.split()
-            local, remote = (int(end.rsplit(":", 1)[1], 16) for end in fields[1:3])
-            yield local, remote, fields[3], fields[9]
-
-
-def socket_inode(local_port: int, remote_port: int) -> str:
-    """The inode of the open TCP connection from ``local_port`` to ``remote_port``."""
-    for local, remote, state, inode in _tcp_sockets():
-        if (local, remote, state) == (local_port, remote_port, "01") and inode != "0":
-            return inode
-    raise AssertionError(f"no socket from port {local_port} to {remote_port}")
-
-
-def socket_owner(inode: str) -> tuple[int, int]:
-    """The process holding a socket, and its file descriptor there."""
-    for pid in filter(str.isdigit, os.listdir("/proc")):
-        try:
-            for fd in os.listdir(f"/proc/{pid}/fd"):
-                if os.readlink(f"/proc/{pid}/fd/{fd}") == f"socket:[{inode}]":
-                    return int(pid), int(fd)
-        except OSError:  # a process that ended, or one not ours
-            continue
-    raise AssertionError(f"no process holds socket {inode}")
-
-
-def nodelay_of(pid: int, fd: int) -> int:
-    """TCP_NODELAY of file descriptor ``fd`` of process ``pid``."""
-    libc = ctypes.CDLL(None, use_errno=True)
-    pidfd = os.pidfd_open(pid)
-    try:
-        copy = libc.syscall(PIDFD_GETFD, pidfd, fd, 0)
-        if copy < 0:
-            raise OSError(ctypes.get_errno(), "pidfd_getfd")
-    finally:
-        os.close(pidfd)
-    with socket.socket(fileno=copy) as copied:  # closes the copy only
-        return copied.getsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY)
-
-
-def server_nodelay(pid: int, port: int) -> list[int]:
-    """TCP_NODELAY of every connection that process ``pid`` accepted on ``port``."""
-    inodes = {inode for local, _, state, inode in _tcp_sockets() if (local, state) == (port, "01")}
-    values = []
-    for fd in os.listdir(f"/proc/{pid}/fd"):
-        with contextlib.suppress(OSError):
-            link = os.readlink(f"/proc/{pid}/fd/{fd}")
-            if link.startswith("socket:[") and link[8:-1] in inodes:
-                values.append(nodelay_of(pid, int(fd)))
-    return values
 
 
 def stop(process: subprocess.Popen) -> None:
@@ -431,7 +368,7 @@ FRAME_PROBE = r"""
     return url;
   };
   // How frames are decoded: <img> elements given a blob URL (ipympl's way), and decodes by
-  // WebCodecs' ImageDecoder or createImageBitmap (interp.apps._live.FRAME_JS's), with times.
+  // WebCodecs' ImageDecoder or createImageBitmap, with times.
   probe.decodes = [];
   const src = Object.getOwnPropertyDescriptor(HTMLImageElement.prototype, 'src');
   Object.defineProperty(HTMLImageElement.prototype, 'src', {
