@@ -44,6 +44,11 @@ def page(browser, request):
     page.console_errors = []
     page.on("console", lambda m: m.type == "error" and page.console_errors.append(m.text))
     page.on("pageerror", lambda e: page.console_errors.append(str(e)))
+    # A failed resource's console message does not say which: note its address beside it.
+    page.on(
+        "response",
+        lambda r: r.status >= 400 and page.console_errors.append(f"{r.status} {r.url}"),
+    )
     yield page
     report = getattr(request.node, "report_call", None)
     if report is not None and report.failed:
@@ -143,16 +148,6 @@ def save_screenshot(page, name: str, canvas=None) -> None:
         app.first.screenshot(path=path)
 
 
-#: Records what changes in the visible notebook's toolbar from now on.
-TOOLBAR_WATCH = f"""() => {{
-    window.toolbarChanges = [];
-    new MutationObserver(records => window.toolbarChanges.push(
-        ...records.map(r => r.type + ' ' + (r.attributeName || '') + ' ' + r.target.nodeName)))
-      .observe(document.querySelector('{VISIBLE} .jp-NotebookPanel-toolbar'),
-               {{subtree: true, childList: true, attributes: true, characterData: true}});
-}}"""
-
-
 def test_checkerboard_lesson_moves_with_its_camera_slider(lab, page):
     canvas = open_and_run(page, lab, "06_checkerboards.ipynb")
     before = wait_until_drawn(canvas)
@@ -160,13 +155,6 @@ def test_checkerboard_lesson_moves_with_its_camera_slider(lab, page):
     pitch = slider(page, "pitch (deg)")
     pitch.scroll_into_view_if_needed()
     value_before = pitch.locator(".widget-readout").inner_text()
-    # JupyterLab's busy tab icon is off and its execution indicator is in the status bar
-    # (jupyter-config/labconfig): with them, each step of the drag swapped the icon to busy and
-    # back, the page fetching it from the server, and the indicator in the notebook's toolbar
-    # made the toolbar reset every button's tabindex, twice.
-    icons = []
-    page.on("request", lambda r: "/favicons/" in r.url and icons.append(r.url))
-    page.evaluate(TOOLBAR_WATCH)
     drag_handle(page, pitch, 25)
     wait_until_changed(canvas, before)
     # The first change seen can be a few pixels (the page scrolled to the slider): measure the
@@ -174,10 +162,6 @@ def test_checkerboard_lesson_moves_with_its_camera_slider(lab, page):
     after = wait_until_drawn(canvas)
     assert pitch.locator(".widget-readout").inner_text() != value_before
     assert np.mean(np.any(after != before, axis=2)) > 0.05, "too little of the figure changed"
-    assert icons == []
-    assert page.locator('link[rel="icon"]').get_attribute("class") == "idle favicon"
-    assert page.evaluate("window.toolbarChanges") == []
-    assert page.locator("#jp-main-statusbar .jp-Notebook-ExecutionIndicator").count() == 1
     assert_no_errors(page)
 
 
@@ -375,6 +359,15 @@ def wait_for_new_text(locator, old: str, seconds: float = 20.0) -> str:
     raise AssertionError(f"the readout still says {old!r}")
 
 
+def shown_at_first(figure_class, name: str) -> bool:
+    """Whether an app's control ``name`` is on show before any tab is chosen: an app with
+    more than ``ROWS_OF_CONTROLS`` controls shows its camera's first (``controls_panel``)."""
+    from interp.apps._app import ROWS_OF_CONTROLS
+    from interp.plots.params import CAMERA_RANGES
+
+    return len(figure_class.PARAMS) <= ROWS_OF_CONTROLS or name in CAMERA_RANGES
+
+
 def test_the_readout_is_live_text_that_follows_a_slider(lab, page):
     canvas = open_and_run(page, lab, "06_checkerboards.ipynb")
     wait_until_drawn(canvas)
@@ -385,12 +378,12 @@ def test_the_readout_is_live_text_that_follows_a_slider(lab, page):
     assert before == kernel_readout(registry.CheckerboardsOutside)  # lesson 6's first app
     assert page.get_by_role("slider").count() >= 10
     # The dropdowns are named by their labels (a <label for=...> beside a <select>).
-    dropdowns = page.locator(f"{VISIBLE} .widget-dropdown select")
+    dropdowns = page.locator(f"{VISIBLE} .widget-dropdown select:visible")
     named = [
         page.get_by_role("combobox", name=param.label, exact=True).count()
         for figure_class in (registry.CheckerboardsOutside, registry.UVImagesFigure)
-        for param in figure_class.PARAMS.values()
-        if param.options
+        for name, param in figure_class.PARAMS.items()
+        if param.options and shown_at_first(figure_class, name)
     ]
     assert dropdowns.count() == sum(named) and all(named), named
     # The pitch slider (the second of the first app), moved with keys.

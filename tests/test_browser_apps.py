@@ -130,6 +130,11 @@ def new_page(context):
     page.console_errors = []
     page.on("console", lambda m: m.type == "error" and page.console_errors.append(m.text))
     page.on("pageerror", lambda e: page.console_errors.append(str(e)))
+    # A failed resource's console message does not say which: note its address beside it.
+    page.on(
+        "response",
+        lambda r: r.status >= 400 and page.console_errors.append(f"{r.status} {r.url}"),
+    )
     return page
 
 

@@ -64,7 +64,7 @@ for name, make in ALL.items():
     for key, control in app.controls.items():
         if hasattr(control, "step"):
             app.set(**{key: min(control.max, control.value + control.step)})
-            app.set(**{key: control.value - control.step if control.value - control.step >= control.min else control.min})
+            app.set(**{key: max(control.min, control.value - 2 * control.step)})
             steps += 2
     app.widget  # the controls and the canvas, as shown
     matplotlib.pyplot.close("all")
@@ -95,9 +95,7 @@ def changed_names(changed: list[str]) -> list[str]:
     lazily filled caches, and pyplot's bookkeeping of open figures."""
     ignore = ("__warningregistry__", "__slotnames__", "_cache", "_instances", "__annotations__")
     return [
-        c
-        for c in changed
-        if not any(part in c for part in ignore) and not c.startswith(MOVING)
+        c for c in changed if not any(part in c for part in ignore) and not c.startswith(MOVING)
     ]
 
 
