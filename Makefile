@@ -28,6 +28,14 @@ NPM_DONE := site/node_modules/.package-lock.json
 # JupyterLab refuses to start as root unless told; containers often run as root.
 LAB_ARGS ?= $(if $(filter 0,$(shell id -u)),--allow-root,)
 
+# The versions the tests run on: the newest pyproject.toml allows (make test), and the oldest
+# (make test-oldest, in a venv of its own with Python 3.10).
+NEWEST := ci/newest.txt
+OLDEST := ci/oldest.txt
+OLDEST_PYTHON ?= python3.10
+OLDEST_VENV   := .venv-oldest
+OLDEST_DONE   := $(OLDEST_VENV)/.installed
+
 # The website's launch buttons and the slides' server (make site REPO=... HUB=...).
 REPO ?= https://github.com/YOUR-ORG/interp
 HUB  ?= https://HUB
@@ -44,8 +52,8 @@ $(RUNTIME): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install --quiet -e .
 	touch $@
 
-$(VENV)/.installed-%: pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e ".[$*]"
+$(VENV)/.installed-%: pyproject.toml $(NEWEST) | $(BIN)/python
+	$(BIN)/python -m pip install --quiet -c $(NEWEST) -e ".[$*]"
 	touch $@
 
 $(NBGRADER_DONE): pyproject.toml
@@ -103,6 +111,19 @@ TEST_JOBS ?= $(shell $(PYTHON) -c 'import os; n = len(os.sched_getaffinity(0)) i
 
 test: lint $(NBGRADER_DONE) $(NPM_DONE)
 	$(BIN)/python -m pytest -n $(TEST_JOBS) --dist loadfile
+	$(MAKE) test-oldest
+
+# The kernel-side tests (no browser, no OpenGL, no notebook tools beyond nbclient) on the oldest
+# versions pyproject.toml allows.
+$(OLDEST_DONE): pyproject.toml $(OLDEST)
+	test -x $(OLDEST_VENV)/bin/python || $(OLDEST_PYTHON) -m venv $(OLDEST_VENV)
+	$(OLDEST_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(OLDEST_VENV)/bin/python -m pip install --quiet -c $(OLDEST) -e ".[test]"
+	touch $@
+
+.PHONY: test-oldest
+test-oldest: $(OLDEST_DONE)
+	$(OLDEST_VENV)/bin/python -m pytest -n $(TEST_JOBS) --dist loadfile -m "not browser and not opengl" $(OLDEST_TESTS)
 
 bench: $(VENV)/.installed-gl
 	$(BIN)/python -m interp.bench
@@ -120,5 +141,5 @@ handouts: $(RUNTIME)
 
 # Leaves $(COURSE)/ alone: it holds the students' submissions and their grades.
 clean:
-	rm -rf $(VENV) $(NBGRADER_VENV) .pytest_cache .ruff_cache .hypothesis teacher release \
+	rm -rf $(VENV) $(NBGRADER_VENV) $(OLDEST_VENV) .pytest_cache .ruff_cache .hypothesis teacher release \
 		gradebook.db build site/node_modules

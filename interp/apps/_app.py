@@ -148,9 +148,7 @@ class App:
             # exists, and a page that says it is ready gets a whole frame at once.
             canvas.manager.resize(*self.figure.bbox.size)
             canvas.on_msg(self._canvas_message)
-        if self.blitter is not None:
-            with DRAW_LOCK:
-                self.blitter.draw()
+            canvas.add_class("interp-app")
         self._update_disabled()
 
     @property
@@ -234,7 +232,7 @@ class App:
     @property
     def widget(self) -> widgets.Widget:
         """The controls above the live figure and its readout (with ipympl), or the controls
-        alone (the static figure is shown apart)."""
+        alone (the static figure is shown apart), in one box."""
         parts = [self.panel]
         if self.live:
             parts += [self.figure.canvas, self.readout]
@@ -243,14 +241,26 @@ class App:
         return box
 
     def _ipython_display_(self) -> None:
+        """The controls, the figure and its readout, each an output of its own.
+
+        The live canvas is displayed itself, not inside a box: ipympl then gives the output a
+        picture of the figure (a PNG, for a notebook saved or exported before any page showed
+        it), and the page's first view starts from that picture rather than a blank canvas.
+        """
         if _PRESENTATION["on"]:  # larger prose and controls on the whole page
             display(HTML(PRESENTATION_CSS))
+        panel = self.panel
+        panel.add_class("interp-app")
         if self.live:
-            display(self.widget)
+            display(panel)
+            with DRAW_LOCK:
+                display(self.figure.canvas)
+            self.readout.add_class("interp-app")
+            display(self.readout)
         else:  # a picture with alt text, the result as text, then the controls
             self._handle = display(self.figure, display_id=True, metadata=self._image_metadata())
             self._readout_handle = display(HTML(self.readout.value), display_id=True)
-            display(self.widget)
+            display(panel)
 
     def _readout_html(self) -> str:
         text = self.plot.readout()

@@ -50,11 +50,8 @@ DRAW_LOCK = threading.RLock()
 
 
 def _parent(artist: Artist) -> Figure | SubFigure:
-    """The (sub)figure an axes is placed in."""
-    try:
-        return artist.get_figure(root=False)  # matplotlib 3.10 and later
-    except TypeError:
-        return artist.figure
+    """The (sub)figure an artist is placed in."""
+    return artist.get_figure(root=False)
 
 
 def _drawn_by(container: Axes | Figure | SubFigure) -> list[Artist]:
