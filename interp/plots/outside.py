@@ -12,10 +12,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
-from matplotlib.backends.backend_agg import RendererAgg
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
-from matplotlib.path import Path
 from matplotlib.ticker import MaxNLocator
 from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
 
@@ -160,7 +158,7 @@ class OutsideView(Plot):
         self.checks = Poly3DCollection([], facecolor="0.3", edgecolor="none", zorder=1.1)
         self.edges = Line3DCollection([], colors="0.45", linewidths=0.6, zorder=1.2)
         # What clipping did, and the camera: redrawn on every change.
-        self.cut_off = _HatchedOnce(
+        self.cut_off = Poly3DCollection(
             [],
             facecolor=(*_rgb(AFFINE["color"]), 0.25),
             edgecolor=AFFINE["color"],
@@ -398,56 +396,6 @@ class OutsideView(Plot):
     def view_angles(self) -> tuple[float, float, float]:
         """(elevation, azimuth, roll) the axes show now (after any orbiting by the mouse)."""
         return (float(self.ax.elev), float(self.ax.azim), float(self.ax.roll))
-
-
-class _HatchedOnce(Poly3DCollection):
-    """Polygons in 3D whose hatch Agg draws once over all of them, after their faces and edges.
-
-    Agg makes the hatch's pattern anew for each path it hatches (0.4 ms a polygon); the pieces
-    that clipping cuts off are several polygons on every step. Hatched as one path with a loop
-    per polygon, the lines are the same: Agg anchors the pattern to the canvas, not the path.
-    One hatch colour for all (the view gives them one). Drawn as any collection where this
-    would change the picture: one polygon, a vector backend (PDF and SVG lay the hatch over
-    each face's own colour, at its alpha), or a filter, path effect or sketch.
-
-    Examples
-    --------
-    >>> from matplotlib.figure import Figure
-    >>> ax = Figure().add_subplot(projection="3d")
-    >>> hatched = _HatchedOnce([[(0, 0, 0), (1, 0, 0), (1, 1, 0)]], hatch="//")
-    >>> _ = ax.add_collection3d(hatched)
-    >>> hatched.get_hatch()
-    '//'
-    """
-
-    def draw(self, renderer: object) -> None:
-        hatch = self._hatch
-        if (
-            not hatch
-            or not self.get_visible()
-            or len(self.get_paths()) < 2
-            or not isinstance(renderer, RendererAgg)
-            or self.get_agg_filter() is not None
-            or self.get_path_effects()
-            or self.get_sketch_params() is not None
-        ):
-            super().draw(renderer)
-            return
-        self._hatch = None  # faces and edges, polygon by polygon, without the hatch
-        try:
-            super().draw(renderer)
-        finally:
-            self._hatch = hatch
-        gc = renderer.new_gc()
-        self._set_gc_clip(gc)
-        gc.set_snap(self.get_snap())
-        gc.set_linewidth(0.0)
-        gc.set_hatch(hatch)
-        gc.set_hatch_linewidth(self._hatch_linewidth)
-        gc.set_hatch_color(self.get_hatchcolor()[0])
-        loops = Path.make_compound_path(*self.get_paths())
-        renderer.draw_path(gc, loops, self.get_transform().frozen(), None)
-        gc.restore()
 
 
 def _rgb(colour: str) -> tuple[float, float, float]:
