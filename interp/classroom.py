@@ -11,9 +11,8 @@ class opening the app, would leave a kernel for every page ever opened, about 13
   is kept for at least ``page_wait`` seconds, so a slow page never finds its kernel gone;
 - caps the live kernels at ``--max-kernels``, counting the kernels still starting, so that a
   class opening the page at once cannot pass it: when a new page would pass the cap, the kernel
-  idle longest whose page has closed is shut down to make room; if every kernel has a page open
-  or loading, the new page gets "503: the server is full" at once instead of exhausting the
-  machine.
+  idle longest with no page connected is shut down to make room; if every kernel has a page
+  open, the new page gets "503: the server is full" at once instead of exhausting the machine.
 
 Usage: ``python -m interp.classroom [--idle S] [--interval S] [--max-kernels N] [PATH]``; other
 arguments go to Voilà unchanged.
@@ -89,18 +88,10 @@ class ClassroomKernelManager(AsyncMappingKernelManager):
         self._unconnected.pop(kernel_id, None)
         return super().remove_kernel(kernel_id)
 
-    def _waiting_for_page(self, kernel_id: str) -> bool:
-        started = self._unconnected.get(kernel_id)
-        return started is not None and time.monotonic() - started < self.page_wait
-
     async def _make_room(self) -> None:
-        """Shut down the kernel idle longest with no page (one whose page closed, or never
-        came within ``page_wait``), or refuse the new page with a 503."""
-        unwatched = [
-            k
-            for k in self.list_kernel_ids()
-            if not self._kernel_connections.get(k) and not self._waiting_for_page(k)
-        ]
+        """Shut down the kernel idle longest with no page connected, or refuse the new page
+        with a 503."""
+        unwatched = [k for k in self.list_kernel_ids() if not self._kernel_connections.get(k)]
         if not unwatched:
             full = f"The server is full ({self.max_kernels} pages are open): close one"
             raise web.HTTPError(503, full, reason=full)

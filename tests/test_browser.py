@@ -303,10 +303,19 @@ def test_classroom_server_culls_closed_pages_and_caps_kernels(tmp_path, browser)
     url = f"http://127.0.0.1:{port}/"
     try:
         opened = []
-        for _ in range(2):  # two students keep their pages open: two kernels
+        for k in range(2):  # two students keep their pages open: two kernels
             page = browser.new_page()
-            page.goto(url, timeout=120_000)
-            page.locator(".jupyter-matplotlib-canvas-div canvas").first.wait_for(timeout=120_000)
+            response = page.goto(url, timeout=120_000)
+            try:
+                page.locator(".jupyter-matplotlib-canvas-div canvas").first.wait_for(
+                    timeout=120_000
+                )
+            except Exception as error:
+                message = (
+                    f"page {k + 1}: {response.status}, no figure; Voilà said:\n"
+                    f"{log.read_text()[-3000:]}"
+                )
+                raise AssertionError(message) from error
             opened.append(page)
         assert kernel_processes(process.pid) == 2
         # A third page would pass the cap, and every kernel has a page: refused, not started.
