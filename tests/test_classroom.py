@@ -124,8 +124,13 @@ def test_make_lessons_installs_only_the_package_and_its_runtime_dependencies():
         re.split(r"[<>=\[ ]", d)[0].lower()
         for d in PYPROJECT["project"]["optional-dependencies"]["dev"]
     }
-    assert {"pytest", "playwright", "ruff", "pre-commit"} <= dev
-    assert f"{DISTRIBUTION}" in dev  # with the gl, present and site extras
+    assert {"playwright", "ruff", "pre-commit"} <= dev
+    assert f"{DISTRIBUTION}" in dev  # with the gl, present, site and test extras
+    test = {
+        re.split(r"[<>=\[ ]", d)[0].lower()
+        for d in PYPROJECT["project"]["optional-dependencies"]["test"]
+    }
+    assert {"pytest", "hypothesis", "nbclient"} <= test
 
 
 def test_presentation_flag_from_the_environment():
