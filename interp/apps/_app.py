@@ -141,6 +141,12 @@ class App:
         if self.live:
             self.blitter = Blitter(self.figure, self.plot.dynamic)
         if isinstance(canvas, widgets.DOMWidget):  # ipympl's
+            # Every frame whole: ipympl sends a frame as the pixels that changed since the last
+            # unless the figure has transparent pixels, and a page that gets frames faster than
+            # it loads them drops some, leaving the curves of earlier steps behind. A figure
+            # whose background is all but opaque (alpha 254/255, which no eye sees) is sent
+            # whole every time.
+            self.figure.patch.set_alpha(WHOLE_FRAMES_ALPHA)
             canvas.header_visible = False
             canvas.toolbar_position = "left"
             # ipympl's view redraws its last picture whenever the widget's size changes; a view
@@ -288,6 +294,9 @@ class App:
         if self._holding_depth == 0:
             self.coalescer.request()  # latest value wins: see interp.apps._blit
 
+
+#: The live figure's background alpha: below 1, so that ipympl sends every frame whole.
+WHOLE_FRAMES_ALPHA = 254 / 255
 
 #: At most this many controls are shown in one group of rows.
 ROWS_OF_CONTROLS = 9
