@@ -79,20 +79,27 @@ def test_browser_benchmark_says_how_busy_the_machine_was():
     assert 1 / os.cpu_count() - 0.15 <= bench_browser.busy_share(start, end) <= 1.0
 
 
-def test_browser_benchmark_judges_rows_against_the_targets():
-    """The verdict after the table: the rows meeting every one of issue 12's targets, then what
-    each other row misses; failed rows and rows without a figure are not judged."""
+def test_browser_benchmark_judges_rows_as_ratios_to_the_picture_floor():
+    """The verdict after the table: each app's step and drag as ratios to the picture floor of
+    the same run, and what each row misses; floors, failed rows and rows without a figure are
+    not judged."""
     rows = [
         {"app": "floor: slider -> text", "floor": True, "median_ms": 31.0, "p90_ms": 34.0},
-        {"app": "depth", "median_ms": 40.0, "p90_ms": 80.0, "fps": 25.0, "settle_ms": 100.0},
-        {"app": "shader", "median_ms": 68.0, "p90_ms": 90.0, "fps": 18.1, "settle_ms": 99.0},
+        {"app": "floor: slider -> picture", "floor": "picture", "median_ms": 40.0, "fps": 25.0},
+        {"app": "depth", "median_ms": 60.0, "fps": 20.0},
+        {"app": "shader", "median_ms": 68.0, "fps": 14.0},
+        {"app": "checkerboards_outside", "median_ms": 50.0, "fps": 11.0},
         {"app": "clipping", "error": "TimeoutError: no picture"},
-        {"app": "mipmap_pyramid", "error": "LookupError: no slider"},
     ]
     assert bench_browser.format_verdict(rows).splitlines() == [
-        "issue 12's targets (step median <= 50 ms, p90 <= 80 ms, drag >= 25 fps, settle <= 100 "
-        "ms; a row's drags by their medians): met by 2 of 3 rows: floor: slider -> text, depth",
-        "  shader: median 68, p90 90, fps 18.1",
+        "ratios to the picture floor (step 40.0 ms, drag 25.0 fps); targets: step <= 1.6x, "
+        "drag >= 0.6x, lesson 6's checkerboards >= 12 fps",
+        "  depth                              step  1.50x  drag  0.80x  ok",
+        "  shader                             step  1.70x  drag  0.56x  missed: step 1.70x the "
+        "floor, drag 0.56x the floor",
+        "  checkerboards_outside              step  1.25x  drag  0.44x  missed: drag 0.44x the "
+        "floor, drag 11.0 fps < 12",
+        "met by 1 of 3 rows",
     ]
 
 
