@@ -476,11 +476,12 @@ _kind = type(_live.plot)
 if {constructed}:
     _params = {{k: _dc.replace(p, default=_values[k]) for k, p in _kind.PARAMS.items()}}
     _kind = type(_kind.__name__, (_kind,), {{"PARAMS": _table(**_params)}})
-_pyplot_figure, _plt.figure = _plt.figure, (lambda *a, **k: _Figure(*a, **k))
+import interp.apps._app as _app_module
+_new_figure, _app_module.new_figure = _app_module.new_figure, (lambda size: _Figure(figsize=size))
 try:
     _fresh = type(_live)(_kind)
 finally:
-    _plt.figure = _pyplot_figure
+    _app_module.new_figure = _new_figure
 if _fresh.values != _values:
     _fresh.set(**_values)
 _buf = _io.BytesIO()
@@ -488,7 +489,7 @@ _fresh.figure.savefig(_buf, format="png", dpi=_live.figure.dpi, bbox_inches=None
                       facecolor=_fresh.figure.get_facecolor())
 print(_json.dumps({{"values": {{k: str(v) for k, v in _values.items()}},
                    "png": _b64.b64encode(_buf.getvalue()).decode()}}))
-del _live, _fresh, _kind, _buf
+del _live, _fresh, _kind, _buf, _app_module, _new_figure
 """
 
 #: Python run in the kernel: where endpoint A of the cell's app is drawn, in CSS pixels from the

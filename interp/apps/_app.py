@@ -26,9 +26,11 @@ from contextlib import contextmanager
 from html import escape
 
 import ipywidgets as widgets
+import matplotlib
 import matplotlib.pyplot as plt
 import numpy as np
 from IPython.display import HTML, display
+from matplotlib.figure import Figure
 
 from interp.apps._blit import DRAW_LOCK, Blitter, Coalescer
 from interp.plots import styled
@@ -118,7 +120,7 @@ class App:
         self.controls = {name: control(param) for name, param in figure_class.PARAMS.items()}
         self._style = {"font.size": 9 * scale}
         with DRAW_LOCK, styled(**self._style), plt.ioff():
-            self.figure = plt.figure(figsize=(width, height))
+            self.figure = new_figure((width, height))
             self.plot = figure_class(self.figure, **self.values)
             # Lay the figure out once, then freeze it: constrained layout would otherwise redo
             # its work (about half of a redraw) on every full draw, for a figure whose shape
@@ -293,6 +295,41 @@ class App:
     def _changed(self, change: dict) -> None:
         if self._holding_depth == 0:
             self.coalescer.request()  # latest value wins: see interp.apps._blit
+
+
+#: The names matplotlib gives ipympl's backend (``%matplotlib widget``, ``ipympl``).
+IPYMPL_BACKENDS = ("widget", "ipympl", "module://ipympl.backend_nbagg")
+
+
+def new_figure(size: tuple[float, float]) -> Figure:
+    """A figure of ``size`` inches: on a live canvas of ours where ipympl is the backend, else
+    pyplot's.
+
+    ipykernel handles widget messages on a thread beside the one that runs cells, so ipympl's
+    own full draws (the page's requests) can run while a cell builds another app under the
+    style sheet's rcParams; the canvas takes :data:`DRAW_LOCK` for them, as the apps do for
+    theirs. It is made as pyplot makes one for ipympl (a canvas and its manager), without
+    pyplot's list of open figures, which would keep every app's figure alive.
+
+    Examples
+    --------
+    >>> new_figure((2.0, 1.0)).get_size_inches().tolist()
+    [2.0, 1.0]
+    """
+    if matplotlib.get_backend() not in IPYMPL_BACKENDS:
+        return plt.figure(figsize=size)
+    from ipympl.backend_nbagg import Canvas, FigureManager
+
+    class TakingTurnsCanvas(Canvas):
+        """ipympl's canvas, whose full draws take :data:`DRAW_LOCK`."""
+
+        def draw(self) -> None:
+            with DRAW_LOCK:
+                super().draw()
+
+    figure = Figure(figsize=size)
+    FigureManager(TakingTurnsCanvas(figure), 0)
+    return figure
 
 
 #: The live figure's background alpha: below 1, so that ipympl sends every frame whole.
