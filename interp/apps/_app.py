@@ -65,8 +65,9 @@ FIT = (8.2, 6.0)
 FIT_PRESENTATION = (11.6, 5.0)
 #: How much larger text is in presentation mode.
 PRESENTATION_TEXT = 1.5
-#: The width of one control, in pixels: three to a row in a laptop's 848 px output area.
-CONTROL_WIDTH = 275
+#: The width of one control, in pixels: three to a row in a laptop's 848 px output area, with
+#: room for the gaps between them.
+CONTROL_WIDTH = 260
 #: Presentation mode's page style: larger prose, and larger text in the apps' own controls
 #: (each app's box has the class ``interp-app``).
 PRESENTATION_CSS = """<style>
