@@ -477,11 +477,14 @@ if {constructed}:
     _params = {{k: _dc.replace(p, default=_values[k]) for k, p in _kind.PARAMS.items()}}
     _kind = type(_kind.__name__, (_kind,), {{"PARAMS": _table(**_params)}})
 import interp.apps._app as _app_module
-_new_figure, _app_module.new_figure = _app_module.new_figure, (lambda size: _Figure(figsize=size))
+# Where the app makes its figure (pyplot, in a checkout measured with --tree that predates it).
+_maker = ((_app_module, "new_figure") if hasattr(_app_module, "new_figure") else (_plt, "figure"))
+_new_figure = getattr(*_maker)
+setattr(*_maker, lambda *a, **k: _Figure(figsize=k.get("figsize", a[0] if a else None)))
 try:
     _fresh = type(_live)(_kind)
 finally:
-    _app_module.new_figure = _new_figure
+    setattr(*_maker, _new_figure)
 if _fresh.values != _values:
     _fresh.set(**_values)
 _buf = _io.BytesIO()
@@ -489,7 +492,7 @@ _fresh.figure.savefig(_buf, format="png", dpi=_live.figure.dpi, bbox_inches=None
                       facecolor=_fresh.figure.get_facecolor())
 print(_json.dumps({{"values": {{k: str(v) for k, v in _values.items()}},
                    "png": _b64.b64encode(_buf.getvalue()).decode()}}))
-del _live, _fresh, _kind, _buf, _app_module, _new_figure
+del _live, _fresh, _kind, _buf, _app_module, _new_figure, _maker
 """
 
 #: Python run in the kernel: where endpoint A of the cell's app is drawn, in CSS pixels from the
