@@ -19,6 +19,7 @@ asks ``App.coalescer`` for a draw; ``App.refresh`` calls ``plot.update(**values)
 from __future__ import annotations
 
 import asyncio
+import functools
 import math
 import os
 from collections.abc import Iterable, Iterator
@@ -319,18 +320,26 @@ def new_figure(size: tuple[float, float]) -> Figure:
     """
     if matplotlib.get_backend() not in IPYMPL_BACKENDS:
         return plt.figure(figsize=size)
-    from ipympl.backend_nbagg import Canvas, FigureManager
+    from ipympl.backend_nbagg import FigureManager
+
+    figure = Figure(figsize=size)
+    FigureManager(_taking_turns_canvas()(figure), 0)
+    return figure
+
+
+@functools.cache
+def _taking_turns_canvas() -> type:
+    """ipympl's canvas class, extended: its full draws take :data:`DRAW_LOCK`. (Made on first
+    use: importing ipympl's backend registers its hooks in IPython, which only ``%matplotlib
+    widget`` should do.)"""
+    from ipympl.backend_nbagg import Canvas
 
     class TakingTurnsCanvas(Canvas):
-        """ipympl's canvas, whose full draws take :data:`DRAW_LOCK`."""
-
         def draw(self) -> None:
             with DRAW_LOCK:
                 super().draw()
 
-    figure = Figure(figsize=size)
-    FigureManager(TakingTurnsCanvas(figure), 0)
-    return figure
+    return TakingTurnsCanvas
 
 
 #: The live figure's background alpha: below 1, so that ipympl sends every frame whole.
