@@ -348,9 +348,8 @@ def repeated_drags(page, canvas, start, amplitude, args) -> dict:
     pictures are the first drag's.
 
     One drag is one sample: the same drag's settle varies from one mouse-up to the next by
-    more than the target's margin (in one run, ``docs/bench-results/repeated-drags/``: the
-    clipping app's five drags settled in 56 to 122 ms, lesson 6's checkerboards at ratio 2 in
-    72 to 125 ms), so a row is judged by the medians of several."""
+    more than the target's margin (in one run, the clipping app's five drags settled in 56 to
+    122 ms), so a row is judged by the medians of several."""
     x, y = start
     drags = []
     for k in range(args.drags):

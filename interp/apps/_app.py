@@ -137,8 +137,6 @@ class App:
         self.readout = widgets.HTML(self._readout_html())
         self._readout_handle = None
         self._readout_timer: asyncio.TimerHandle | None = None
-        #: Whether a control does anything now, with why not (``plot.inactive``).
-        self._notes: dict[str, widgets.Widget] = {}
         self.coalescer = Coalescer(self.refresh)
         self.blitter: Blitter | None = None
         canvas = self.figure.canvas

@@ -94,6 +94,7 @@ def layers(figure: Figure, dynamic: Iterable[Artist]) -> list[Artist]:
     >>> note in layers(fig, [curve])
     True
     """
+    orders: dict[int, list[Artist]] = {}  # id(container) -> what it draws, in order
     firsts: dict[int, tuple[object, int]] = {}  # id(container) -> (container, first index)
     for artist in dynamic:
         ax = artist.axes
@@ -107,20 +108,15 @@ def layers(figure: Figure, dynamic: Iterable[Artist]) -> list[Artist]:
         child = _child_of(container, artist)
         if child is None:
             continue
-        order = _drawn_by(container)
+        order = orders.setdefault(id(container), _drawn_by(container))
         index = next(k for k, a in enumerate(order) if a is child)
         kept = firsts.get(id(container))
         if kept is None or index < kept[1]:
             firsts[id(container)] = (container, index)
-    parts = [_drawn_by(container)[first:] for container, first in firsts.values()]
-    whole = {id(a) for part in parts for a in part if isinstance(a, Axes)}
+    parts = {key: orders[key][first:] for key, (_, first) in firsts.items()}
+    whole = {id(a) for part in parts.values() for a in part if isinstance(a, Axes)}
     # An axes drawn whole draws its own children: none of them may be animated.
-    return [
-        a
-        for (container, _), part in zip(firsts.values(), parts, strict=True)
-        if id(container) not in whole
-        for a in part
-    ]
+    return [a for key, part in parts.items() if key not in whole for a in part]
 
 
 class Blitter:
