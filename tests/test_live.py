@@ -93,8 +93,12 @@ def test_every_frame_over_every_slider_is_the_figure_as_saved(name):
 
 
 #: Sliders whose every step changes the figure's static parts (a colour bar's scale, the
-#: image's shape, the mip levels shown): a full draw each time is right.
-RESCALING = {("checkerboards", "frequency"), ("checkerboards", "quads")}
+#: image's shape, the legend's label for the ground): a full draw each time is right.
+RESCALING = {
+    (app, key)
+    for app in ("checkerboards", "checkerboards_outside", "outside_view", "clipping_outside")
+    for key in ("frequency", "quads")
+}
 
 
 @pytest.mark.parametrize("name", ALL)
@@ -175,15 +179,22 @@ def test_a_resized_figure_is_drawn_whole():
 
 
 def test_a_slider_step_after_an_orbit_shows_the_new_viewpoint():
-    """The mouse turns the outside view's 3D axes, which is drawn whole in every frame."""
+    """The mouse turns the outside view's 3D axes (its ground, panes and ticks are in the
+    background): the next step shows the camera from the new viewpoint over the new
+    background, and the steps after it are blitted again."""
     app = apps.outside_view()
     blitter = Blitter(app.figure, app.plot.dynamic)
     blitter.draw()
-    assert app.plot.outside.ax in blitter.layers
+    assert app.plot.outside.ax not in blitter.layers
+    assert app.plot.outside.eye in blitter.layers
     app.plot.outside.ax.view_init(elev=5.0, azim=60.0, vertical_axis="y")
     app.set(pitch=20.0)
     blitter.draw()
-    assert blitter.blits == 1
+    assert_shows_the_figure(app.figure)
+    blits = blitter.blits
+    app.set(pitch=21.0)
+    blitter.draw()
+    assert blitter.blits == blits + 1
     assert_shows_the_figure(app.figure)
 
 

@@ -12,7 +12,9 @@ blitting" tutorial (``copy_from_bbox``, ``restore_region``, ``draw_artist``, ``b
   that holds a changing artist, every artist that a full draw paints after the first changing
   one (spines, legends, labels above the curves) is marked animated too and drawn again, in the
   same order: so a frame is the full redraw pixel for pixel, and nothing is painted twice.
-  A 3D axes sorts its own artists by depth as it draws, so it is drawn whole.
+  A 3D axes that sorts its own artists by depth as it draws is drawn whole; one with a
+  fixed order (``computed_zorder`` off) is layered as a 2D axes is. In a figure, an axes drawn
+  whole is drawn over by the axes after it that overlap it, and by no others.
 - **A change to anything else redraws the figure once.** Animated artists do not mark the
   figure stale (that is what ``animated`` means); everything else does. So after an update,
   a stale figure (axis limits, a backdrop, a change made from a cell) gets a full draw, and a
@@ -36,6 +38,7 @@ from matplotlib.axes import Axes
 from matplotlib.axis import Axis
 from matplotlib.backend_bases import DrawEvent
 from matplotlib.figure import Figure, SubFigure
+from matplotlib.transforms import Bbox
 
 #: How long a pending draw waits for more slider messages to arrive, in seconds.
 SETTLE = 0.004
@@ -80,8 +83,8 @@ def _holds(parent: Artist, artist: Artist) -> bool:
 
 def layers(figure: Figure, dynamic: Iterable[Artist]) -> list[Artist]:
     """The artists a blitted frame draws over the background, in the order a full draw paints
-    them: in every axes holding one of ``dynamic``, each artist from the first of them on (a 3D
-    axes whole, in the order of its figure's children).
+    them: in every axes holding one of ``dynamic``, each artist from the first of them on (an
+    axes drawn whole, and what overlaps it after it, in the order of its figure's children).
 
     Examples
     --------
@@ -96,12 +99,15 @@ def layers(figure: Figure, dynamic: Iterable[Artist]) -> list[Artist]:
     """
     orders: dict[int, list[Artist]] = {}  # id(container) -> what it draws, in order
     firsts: dict[int, tuple[object, int]] = {}  # id(container) -> (container, first index)
+    changing: dict[int, set[int]] = {}  # id(container) -> ids of its changing children
     for artist in dynamic:
         ax = artist.axes
         container: Axes | Figure | SubFigure
         if ax is None:
             container = _parent(artist) if artist.figure is not None else figure
-        elif ax.name == "3d":
+        elif artist is ax or getattr(ax, "computed_zorder", False):
+            # Drawn whole: an axes itself, or a 3D axes that sorts its artists by depth as it
+            # draws (one with a fixed order draws them as a 2D axes does).
             container, artist = _parent(ax), ax
         else:
             container = ax
@@ -110,13 +116,46 @@ def layers(figure: Figure, dynamic: Iterable[Artist]) -> list[Artist]:
             continue
         order = orders.setdefault(id(container), _drawn_by(container))
         index = next(k for k, a in enumerate(order) if a is child)
+        changing.setdefault(id(container), set()).add(id(child))
         kept = firsts.get(id(container))
         if kept is None or index < kept[1]:
             firsts[id(container)] = (container, index)
     parts = {key: orders[key][first:] for key, (_, first) in firsts.items()}
+    renderer = figure.canvas.get_renderer() if hasattr(figure.canvas, "get_renderer") else None
+    for key, (container, _) in firsts.items():
+        if not isinstance(container, Axes) and renderer is not None:
+            parts[key] = _overlapping(parts[key], changing[key], renderer)
     whole = {id(a) for part in parts.values() for a in part if isinstance(a, Axes)}
     # An axes drawn whole draws its own children: none of them may be animated.
     return [a for key, part in parts.items() if key not in whole for a in part]
+
+
+def _overlapping(part: list[Artist], changing: set[int], renderer: object) -> list[Artist]:
+    """Of a (sub)figure's artists from the first changing one on, those a frame must draw: the
+    changing ones, and each later one whose extent meets one already kept (a full draw paints
+    it over them). Axes beside a 3D axes stay in the background."""
+    kept: list[Artist] = []
+    boxes = []
+    for artist in part:
+        box = _extent(artist, renderer)
+        meets = any(box is None or b is None or box.overlaps(b) for b in boxes)
+        if id(artist) in changing or meets:
+            kept.append(artist)
+            boxes.append(box)
+    return kept
+
+
+def _extent(artist: Artist, renderer: object) -> Bbox | None:
+    """Where ``artist`` may paint, in pixels, a pixel to spare; None if it cannot say."""
+    try:
+        box = artist.get_tightbbox(renderer)
+    except (AttributeError, TypeError, ValueError):
+        return None
+    if box is None:
+        return None
+    if isinstance(artist, Axes):  # what it clips to, whatever its labels' extent
+        box = Bbox.union([box, artist.bbox])
+    return box.padded(1)
 
 
 class Blitter:

@@ -121,7 +121,9 @@ class CheckerPanels(Plot):
     @property
     def dynamic(self) -> list:
         images = [self.approximate, self.correct, self.error]
-        return [*images, *(ax.title for ax in self.axes)]
+        # The colour bar is drawn whole each frame: its scale follows the largest error, and
+        # a change of scale would otherwise redraw the whole figure.
+        return [*images, *(ax.title for ax in self.axes), self.colorbar.ax]
 
 
 #: The values of u and v the contour lines of :class:`UVImages` follow.

@@ -38,6 +38,11 @@ SHOWS = ("checkerboard", "triangles")
 HALF_WIDTHS = (2.5, 3.5, 4.5, 6.0, 9.0)
 #: Heights of the box drawn above the ground.
 TOPS = (1.5, 2.5, 3.5, 4.5)
+#: The least room between the eye and the box's side or top. Not half of a box step: the
+#: lessons' default eyes stand at round distances and heights, which would then sit exactly on
+#: the edge between two boxes, and a key press from the default would change the box (and a
+#: new box redraws the whole figure rather than the camera alone).
+EYE_ROOM = 0.4
 #: Lowest point of the box (a camera may stand below the ground).
 BOTTOM = -0.6
 #: How much larger than matplotlib's default the box is drawn in its axes.
@@ -313,8 +318,8 @@ class OutsideView(Plot):
     def _set_box(self, eye: np.ndarray) -> None:
         """Axis ranges with equal units that hold the quad and the eye, from a few sizes (so
         that most slider steps keep them)."""
-        half = _snap(max(abs(eye[0]), abs(eye[2]), LESSON_SIZE / 2) + 0.5, HALF_WIDTHS)
-        top = _snap(eye[1] + 0.5, TOPS)
+        half = _snap(max(abs(eye[0]), abs(eye[2]), LESSON_SIZE / 2) + EYE_ROOM, HALF_WIDTHS)
+        top = _snap(eye[1] + EYE_ROOM, TOPS)
         box = (half, top)
         if self._shown.get("box") != box:
             self.ax.set_xlim(-half, half)
